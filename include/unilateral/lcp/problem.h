@@ -1,0 +1,108 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <string>
+#include <vector>
+
+/**
+ * The solver layer: one mixed linear complementarity problem (LCP) form that
+ * both studies reduce to, and every algorithm they describe.
+ *
+ * Problem form. Given A (n x n, sparse, symmetric positive semidefinite), b,
+ * a set S of constrained indices and lower bounds l_S, find u such that with
+ *   lambda = A u - b:
+ *     lambda_i = 0                      for i not in S,
+ *     u_S >= l_S,  lambda_S >= 0,  (u_S - l_S)^T lambda_S = 0.
+ * Equivalently: u minimises 1/2 u^T A u - b^T u subject to u_S >= l_S.
+ *
+ * How the papers map onto it:
+ *  - Ainsworth & Mihai (masonry), LCP (3.7)-(3.8): A u + Sigma = b with
+ *    Sigma_S <= 0, u_S >= 0. So Sigma = -lambda and l = 0 (after their change
+ *    of variables; we keep Signorini bounds as l = -g instead of shifting).
+ *  - Fernandes, Figueiredo & Judice (plate), MLCP (32)-(35):
+ *    w_J = C_JJ z_J - F_J, z_J1 >= psi, w_J1 >= 0. So A = C_JJ, b = F_J,
+ *    u = z, lambda = w, S = J1 and l = psi.
+ */
+namespace unilateral::lcp
+{
+  using Index        = int;
+  using Vector       = Eigen::VectorXd;
+  using DenseMatrix  = Eigen::MatrixXd;
+  using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, Index>;
+
+  struct Problem
+  {
+    /// Symmetric positive semidefinite, both triangles stored, compressed,
+    /// every diagonal entry present in the pattern (possibly zero).
+    SparseMatrix A;
+    Vector       b;
+    /// S: the constrained indices, strictly increasing.
+    std::vector<Index> constrained;
+    /// l_S: one lower bound per entry of `constrained`, in the same order.
+    Vector lower_bound;
+
+    Index
+    size() const
+    {
+      return static_cast<Index>(b.size());
+    }
+
+    Index
+    n_constrained() const
+    {
+      return static_cast<Index>(constrained.size());
+    }
+
+    /// mask[i] != 0 iff i is in S.
+    std::vector<char>
+    constrained_mask() const;
+
+    /// The bound of every index: l_i on S, -infinity elsewhere.
+    Vector
+    full_lower_bound() const;
+  };
+
+  /**
+   * Check that @p problem is a well-posed instance of the form above and put
+   * it into the canonical storage (compressed, sorted S, diagonal present).
+   * Throws InputError with one line naming the problem: dimension mismatch,
+   * non-symmetric A, NaN or infinite entries, negative diagonal, repeated or
+   * out-of-range indices in S.
+   */
+  void
+  check_and_normalise(Problem &problem);
+
+  /// The objective 1/2 u^T A u - b^T u.
+  double
+  energy(const Problem &problem, const Vector &u);
+
+  /**
+   * Relative KKT residuals of u (lambda = A u - b is computed here, so no
+   * solver can report a residual it did not earn). With the force scale
+   * f = ||b||_inf + || |A| |u| ||_inf and the displacement scale
+   * d = ||u||_inf + ||l_S||_inf (each replaced by 1 if zero):
+   *  stationarity       = ||lambda_{not S}||_inf / f
+   *  primal feasibility = ||max(l_S - u_S, 0)||_inf / d
+   *  dual feasibility   = ||max(-lambda_S, 0)||_inf / f
+   *  complementarity    = max_i |u_i - l_i| |lambda_i| / (d f) over S.
+   */
+  struct KktResiduals
+  {
+    double stationarity       = 0;
+    double primal_feasibility = 0;
+    double dual_feasibility   = 0;
+    double complementarity    = 0;
+
+    double
+    max() const;
+  };
+
+  KktResiduals
+  kkt_residuals(const Problem &problem, const Vector &u);
+
+  /// The multiplier lambda = A u - b on S, zero elsewhere.
+  Vector
+  multiplier(const Problem &problem, const Vector &u);
+} // namespace unilateral::lcp

@@ -1,0 +1,104 @@
+#pragma once
+
+#include <unilateral/lcp/problem.h>
+
+#include <chrono>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace unilateral::lcp
+{
+  enum class Status
+  {
+    converged,
+    iteration_limit,
+    infeasible, ///< the LCP has no solution (Graves' method proves it)
+    singular,   ///< a reduced system could not be factorised
+    inaccurate  ///< the method's own test passed, the KKT check did not
+  };
+
+  std::string
+  to_string(Status status);
+
+  /// Work counters: what ran, not how long it took (deterministic, testable).
+  struct Counters
+  {
+    unsigned int symbolic_analyses       = 0;
+    unsigned int numeric_factorisations  = 0;
+    unsigned int factorisation_updates   = 0; ///< low-rank updates instead
+    unsigned int triangular_solves       = 0; ///< one per right-hand side
+    unsigned int matrix_vector_products  = 0;
+  };
+
+  /**
+   * One report per solve: status, iterations, time per phase, relative KKT
+   * residuals of the final iterate against the original (unregularised) A.
+   */
+  struct Report
+  {
+    std::string  solver;
+    Status       status     = Status::converged;
+    unsigned int iterations = 0;
+    /// Iterations of the projection step (PDAS on A from u_eps), if it ran.
+    unsigned int projection_iterations = 0;
+    bool         projected             = false;
+    /// Regularisation actually added to the diagonal (absolute), 0 if none.
+    double       regularisation = 0;
+    unsigned int n_active       = 0;
+    double       energy         = 0;
+    KktResiduals kkt;
+    Counters     counters;
+    /// Empty when converged; otherwise one line saying what went wrong.
+    std::string message;
+    /// Wall time per phase in seconds, in the order the phases first ran.
+    std::vector<std::pair<std::string, double>> phase_times;
+
+    bool
+    converged() const
+    {
+      return status == Status::converged;
+    }
+
+    void
+    add_time(const std::string &phase, double seconds);
+
+    double
+    total_time() const;
+  };
+
+  /// Adds the wall time of its lifetime to a phase of a Report.
+  class PhaseTimer
+  {
+  public:
+    PhaseTimer(Report &report, std::string phase)
+      : report(report)
+      , phase(std::move(phase))
+      , start(std::chrono::steady_clock::now())
+    {}
+
+    ~PhaseTimer()
+    {
+      const std::chrono::duration<double> elapsed =
+        std::chrono::steady_clock::now() - start;
+      report.add_time(phase, elapsed.count());
+    }
+
+  private:
+    Report                                &report;
+    std::string                            phase;
+    std::chrono::steady_clock::time_point  start;
+  };
+
+  /**
+   * The primal-dual solution: u, lambda = A u - b on S (zero elsewhere), and
+   * the active set: indices of S where u sits at its bound, or (for
+   * interior-point iterates) where the slack times A_ii is below lambda_i.
+   */
+  struct Solution
+  {
+    Vector             u;
+    Vector             lambda;
+    std::vector<Index> active_set;
+  };
+} // namespace unilateral::lcp

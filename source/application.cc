@@ -1,0 +1,211 @@
+#include <unilateral/application.h>
+#include <unilateral/base/input_error.h>
+#include <unilateral/scenes/scene.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace unilateral
+{
+  namespace
+  {
+    const char *usage_text =
+      "unilateral: frictionless contact problems as linear complementarity "
+      "problems.\n"
+      "\n"
+      "Usage:\n"
+      "  unilateral FILE.prm                run the scene FILE.prm describes\n"
+      "  unilateral --print-parameters [prm|json]\n"
+      "                                     print every parameter with its\n"
+      "                                     documentation and default\n"
+      "  unilateral --help                  this text\n"
+      "\n"
+      "A run writes into <Output/Directory>/<Output/Run name>/ (by default\n"
+      "output/<name of FILE>/): summary.json, a copy of FILE.prm, and VTU/PVD\n"
+      "files for ParaView. Exit code: 0 converged, 1 bad input, 2 the solver\n"
+      "did not converge (its status is in summary.json).\n";
+
+    std::string
+    default_scene()
+    {
+      for (const auto &scene : SceneRegistry::all())
+        if (scene.name == "masonry")
+          return scene.name;
+      return SceneRegistry::all().front().name;
+    }
+
+    void
+    declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Scene",
+                        default_scene(),
+                        dealii::Patterns::Selection(SceneRegistry::selection()),
+                        "Which problem to build and solve.");
+      prm.enter_subsection("Output");
+      {
+        prm.declare_entry("Directory",
+                          "output",
+                          dealii::Patterns::FileName(
+                            dealii::Patterns::FileName::output),
+                          "Where runs write; each run in its own "
+                          "subdirectory named by 'Run name'.");
+        prm.declare_entry("Run name",
+                          "",
+                          dealii::Patterns::Anything(),
+                          "Name of this run's subdirectory; empty takes the "
+                          "parameter file's name without extension.");
+        prm.declare_entry("Write VTU",
+                          "true",
+                          dealii::Patterns::Bool(),
+                          "Write VTU/PVD files for ParaView (false skips all "
+                          "field output and the work it needs).");
+        prm.declare_entry("Export LCP",
+                          "false",
+                          dealii::Patterns::Bool(),
+                          "Write the LCP (lcp_A.mtx, lcp_b.txt, "
+                          "lcp_constraints.txt) in the format the lcp scene "
+                          "reads, so other tools can solve exactly our "
+                          "problem.");
+        prm.declare_entry("Print timings",
+                          "true",
+                          dealii::Patterns::Bool(),
+                          "Print the table of wall time per stage at the end "
+                          "(tests switch it off: their output must not depend "
+                          "on time).");
+        prm.declare_entry("Progress",
+                          "true",
+                          dealii::Patterns::Bool(),
+                          "Print a line per solver iteration.");
+      }
+      prm.leave_subsection();
+      lcp::SolverParameters::declare_parameters(prm);
+      for (const auto &scene : SceneRegistry::all())
+        scene.declare_parameters(prm);
+    }
+
+    int
+    print_parameters(const std::string &format, std::ostream &out)
+    {
+      dealii::ParameterHandler prm;
+      declare_parameters(prm);
+      if (format == "json")
+        prm.print_parameters(out, dealii::ParameterHandler::JSON);
+      else if (format == "prm")
+        prm.print_parameters(out,
+                             dealii::ParameterHandler::PRM |
+                               dealii::ParameterHandler::KeepDeclarationOrder);
+      else
+        throw InputError("--print-parameters " + format +
+                         ": unknown format; use prm or json");
+      return 0;
+    }
+
+    int
+    run(const std::string &parameter_file, std::ostream &out)
+    {
+      if (!std::filesystem::is_regular_file(parameter_file))
+        throw InputError("cannot read parameter file '" + parameter_file +
+                         "': no such file");
+      dealii::ParameterHandler prm;
+      declare_parameters(prm);
+      prm.parse_input(parameter_file);
+
+      const SceneInfo &scene_info = SceneRegistry::get(prm.get("Scene"));
+
+      RunContext context;
+      context.parameter_file = parameter_file;
+      prm.enter_subsection("Output");
+      const std::string directory = prm.get("Directory");
+      context.run_name            = prm.get("Run name");
+      if (context.run_name.empty())
+        context.run_name =
+          std::filesystem::path(parameter_file).stem().string();
+      context.write_vtu     = prm.get_bool("Write VTU");
+      context.export_lcp    = prm.get_bool("Export LCP");
+      context.print_timings = prm.get_bool("Print timings");
+      const bool progress   = prm.get_bool("Progress");
+      prm.leave_subsection();
+      context.solver.parse_parameters(prm);
+      // Unknown method names cannot pass the Selection pattern, but check
+      // anyway: the registry gives the better message.
+      lcp::SolverRegistry::get(context.solver.method);
+
+      std::unique_ptr<Scene> scene = scene_info.create(prm);
+
+      context.output_directory =
+        std::filesystem::path(directory) / context.run_name;
+      std::error_code error;
+      std::filesystem::create_directories(context.output_directory, error);
+      if (error)
+        throw InputError("parameter 'Output/Directory' = " + directory +
+                         ": cannot create '" +
+                         context.output_directory.string() +
+                         "': " + error.message());
+      std::filesystem::copy_file(
+        parameter_file,
+        context.output_directory / "parameters.prm",
+        std::filesystem::copy_options::overwrite_existing,
+        error);
+      if (error)
+        throw InputError("cannot copy the parameter file into '" +
+                         context.output_directory.string() +
+                         "': " + error.message());
+
+      dealii::TimerOutput timer(out,
+                                dealii::TimerOutput::never,
+                                dealii::TimerOutput::wall_times);
+      context.out      = &out;
+      context.progress = progress ? &out : nullptr;
+      context.timer    = &timer;
+
+      out << "unilateral: scene " << scene_info.name << ", run '"
+          << context.run_name << "'" << std::endl;
+      const lcp::Report report = scene->run(context);
+      out << "  results in " << context.output_directory.string() << "/"
+          << std::endl;
+      if (context.print_timings)
+        timer.print_summary();
+      return report.converged() ? 0 : 2;
+    }
+  } // namespace
+
+  int
+  run_application(int argc, char **argv, std::ostream &out, std::ostream &err)
+  {
+    try
+      {
+        const std::string first = argc > 1 ? argv[1] : "";
+        if (argc < 2 || first == "--help" || first == "-h")
+          {
+            (argc < 2 ? err : out) << usage_text;
+            return argc < 2 ? 1 : 0;
+          }
+        if (first == "--print-parameters")
+          return print_parameters(argc > 2 ? argv[2] : "prm", out);
+        if (first.rfind("-", 0) == 0)
+          throw InputError("unknown option '" + first +
+                           "'; see unilateral --help");
+        if (argc > 2)
+          throw InputError("expected one parameter file, got " +
+                           std::to_string(argc - 1) +
+                           " arguments; see unilateral --help");
+        return run(first, out);
+      }
+    catch (const std::exception &exception)
+      {
+        out.flush();
+        err << "unilateral: error: " << one_line_message(exception)
+            << std::endl;
+        return 1;
+      }
+    catch (...)
+      {
+        err << "unilateral: error: unknown exception" << std::endl;
+        return 1;
+      }
+  }
+} // namespace unilateral

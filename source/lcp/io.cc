@@ -1,0 +1,292 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/lcp/io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace unilateral::lcp
+{
+  namespace
+  {
+    std::ifstream
+    open_for_reading(const std::string &file_name, const std::string &what)
+    {
+      std::ifstream in(file_name);
+      if (!in)
+        throw InputError("cannot read " + what + " file '" + file_name +
+                         "': check the path (relative paths are taken from "
+                         "the working directory)");
+      return in;
+    }
+
+    std::ofstream
+    open_for_writing(const std::string &file_name)
+    {
+      std::ofstream out(file_name);
+      if (!out)
+        throw InputError("cannot write '" + file_name +
+                         "': check that the directory exists and is writable");
+      out << std::setprecision(17);
+      return out;
+    }
+
+    [[noreturn]] void
+    fail(const std::string &file_name,
+         const unsigned int line,
+         const std::string &problem)
+    {
+      throw InputError(file_name + ":" + std::to_string(line) + ": " +
+                       problem);
+    }
+
+    bool
+    is_comment_or_blank(const std::string &line)
+    {
+      const auto first = line.find_first_not_of(" \t\r");
+      return first == std::string::npos || line[first] == '%' ||
+             line[first] == '#';
+    }
+
+    // Parse a number, accepting what strtod accepts and nothing more.
+    bool
+    parse_number(const std::string &token, double &value)
+    {
+      if (token.empty())
+        return false;
+      char *end = nullptr;
+      value     = std::strtod(token.c_str(), &end);
+      return end == token.c_str() + token.size();
+    }
+
+    bool
+    parse_index(const std::string &token, long long &value)
+    {
+      if (token.empty())
+        return false;
+      char *end = nullptr;
+      value     = std::strtoll(token.c_str(), &end, 10);
+      return end == token.c_str() + token.size();
+    }
+  } // namespace
+
+  SparseMatrix
+  read_matrix_market(const std::string &file_name)
+  {
+    std::ifstream in = open_for_reading(file_name, "matrix");
+    std::string   line;
+    unsigned int  line_number = 0;
+
+    if (!std::getline(in, line))
+      fail(file_name, 1, "empty file, expected a Matrix Market header");
+    ++line_number;
+    std::istringstream header(line);
+    std::string        banner, object, format, field, symmetry;
+    header >> banner >> object >> format >> field >> symmetry;
+    std::transform(object.begin(), object.end(), object.begin(), ::tolower);
+    std::transform(format.begin(), format.end(), format.begin(), ::tolower);
+    std::transform(field.begin(), field.end(), field.begin(), ::tolower);
+    std::transform(symmetry.begin(), symmetry.end(), symmetry.begin(),
+                   ::tolower);
+    if (banner != "%%MatrixMarket" || object != "matrix" ||
+        format != "coordinate")
+      fail(file_name, 1,
+           "expected '%%MatrixMarket matrix coordinate real "
+           "symmetric|general'");
+    if (field != "real" && field != "integer" && field != "double")
+      fail(file_name, 1, "field '" + field + "' not supported (real only)");
+    if (symmetry != "general" && symmetry != "symmetric")
+      fail(file_name, 1,
+           "symmetry '" + symmetry + "' not supported (general or symmetric)");
+    const bool symmetric = (symmetry == "symmetric");
+
+    long long rows = -1, cols = -1, entries = -1;
+    while (std::getline(in, line))
+      {
+        ++line_number;
+        if (is_comment_or_blank(line))
+          continue;
+        std::istringstream size_line(line);
+        if (!(size_line >> rows >> cols >> entries) || rows < 0 || cols < 0 ||
+            entries < 0)
+          fail(file_name, line_number,
+               "expected the size line 'rows columns entries'");
+        break;
+      }
+    if (rows < 0)
+      fail(file_name, line_number, "missing the size line");
+    if (rows > std::numeric_limits<Index>::max() ||
+        entries > std::numeric_limits<Index>::max())
+      fail(file_name, line_number, "matrix too large for 32-bit indices");
+
+    std::vector<Eigen::Triplet<double, Index>> triplets;
+    triplets.reserve(symmetric ? 2 * entries : entries);
+    long long read = 0;
+    while (read < entries && std::getline(in, line))
+      {
+        ++line_number;
+        if (is_comment_or_blank(line))
+          continue;
+        std::istringstream entry(line);
+        std::string        si, sj, sv;
+        long long          i = 0, j = 0;
+        double             value = 0;
+        if (!(entry >> si >> sj >> sv) || !parse_index(si, i) ||
+            !parse_index(sj, j) || !parse_number(sv, value))
+          fail(file_name, line_number, "expected 'row column value'");
+        if (i < 1 || i > rows || j < 1 || j > cols)
+          fail(file_name, line_number,
+               "index (" + si + ", " + sj + ") outside the " +
+                 std::to_string(rows) + " x " + std::to_string(cols) +
+                 " matrix (indices are 1-based)");
+        if (!std::isfinite(value))
+          fail(file_name, line_number, "entry is not a finite number");
+        triplets.emplace_back(i - 1, j - 1, value);
+        if (symmetric && i != j)
+          triplets.emplace_back(j - 1, i - 1, value);
+        ++read;
+      }
+    if (read < entries)
+      fail(file_name, line_number,
+           "file ends after " + std::to_string(read) + " of " +
+             std::to_string(entries) + " entries");
+
+    SparseMatrix A(static_cast<Index>(rows), static_cast<Index>(cols));
+    A.setFromTriplets(triplets.begin(), triplets.end());
+    A.makeCompressed();
+    return A;
+  }
+
+  void
+  write_matrix_market(const SparseMatrix &A, const std::string &file_name)
+  {
+    std::ofstream out = open_for_writing(file_name);
+    // Symmetric storage: the lower triangle only.
+    long long lower = 0;
+    for (Index j = 0; j < A.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        lower += (it.row() >= j);
+    out << "%%MatrixMarket matrix coordinate real symmetric\n"
+        << "% written by unilateral\n"
+        << A.rows() << " " << A.cols() << " " << lower << "\n";
+    for (Index j = 0; j < A.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        if (it.row() >= j)
+          out << it.row() + 1 << " " << j + 1 << " " << it.value() << "\n";
+  }
+
+  Vector
+  read_vector(const std::string &file_name)
+  {
+    std::ifstream       in = open_for_reading(file_name, "vector");
+    std::string         line;
+    unsigned int        line_number = 0;
+    std::vector<double> values;
+    bool                array_header = false, size_line_seen = false;
+    while (std::getline(in, line))
+      {
+        ++line_number;
+        if (line_number == 1 && line.rfind("%%MatrixMarket", 0) == 0)
+          {
+            array_header = true;
+            continue;
+          }
+        if (is_comment_or_blank(line))
+          continue;
+        if (array_header && !size_line_seen)
+          {
+            size_line_seen = true; // "rows 1"
+            continue;
+          }
+        std::istringstream tokens(line);
+        std::string        token, extra;
+        double             value = 0;
+        tokens >> token;
+        if (!parse_number(token, value) || (tokens >> extra))
+          fail(file_name, line_number, "expected one number per line");
+        if (!std::isfinite(value))
+          fail(file_name, line_number, "value is not a finite number");
+        values.push_back(value);
+      }
+    return Eigen::Map<Vector>(values.data(), values.size());
+  }
+
+  void
+  write_vector(const Vector &v, const std::string &file_name)
+  {
+    std::ofstream out = open_for_writing(file_name);
+    for (Index i = 0; i < v.size(); ++i)
+      out << v[i] << "\n";
+  }
+
+  void
+  read_constraints(const std::string  &file_name,
+                   std::vector<Index> &indices,
+                   Vector             &lower_bounds)
+  {
+    std::ifstream       in = open_for_reading(file_name, "constraints");
+    std::string         line;
+    unsigned int        line_number = 0;
+    std::vector<double> bounds;
+    indices.clear();
+    while (std::getline(in, line))
+      {
+        ++line_number;
+        if (is_comment_or_blank(line))
+          continue;
+        std::istringstream tokens(line);
+        std::string        si, sb, extra;
+        long long          i     = 0;
+        double             bound = 0;
+        if (!(tokens >> si >> sb) || (tokens >> extra) || !parse_index(si, i) ||
+            !parse_number(sb, bound))
+          fail(file_name, line_number,
+               "expected 'index lower_bound' (1-based index)");
+        if (i < 1 || i > std::numeric_limits<Index>::max())
+          fail(file_name, line_number,
+               "index " + si + " must be >= 1 (indices are 1-based)");
+        if (std::isnan(bound) || bound == std::numeric_limits<double>::infinity())
+          fail(file_name, line_number,
+               "lower bound must be a number (not NaN or +inf)");
+        indices.push_back(static_cast<Index>(i - 1));
+        bounds.push_back(bound);
+      }
+    lower_bounds = Eigen::Map<Vector>(bounds.data(), bounds.size());
+  }
+
+  void
+  write_constraints(const Problem &problem, const std::string &file_name)
+  {
+    std::ofstream out = open_for_writing(file_name);
+    out << "# index (1-based) lower_bound\n";
+    for (Index k = 0; k < problem.n_constrained(); ++k)
+      out << problem.constrained[k] + 1 << " " << problem.lower_bound[k]
+          << "\n";
+  }
+
+  Problem
+  read_problem(const std::string &matrix_file,
+               const std::string &rhs_file,
+               const std::string &constraints_file)
+  {
+    Problem problem;
+    problem.A = read_matrix_market(matrix_file);
+    problem.b = read_vector(rhs_file);
+    read_constraints(constraints_file,
+                     problem.constrained,
+                     problem.lower_bound);
+    check_and_normalise(problem);
+    return problem;
+  }
+
+  void
+  write_problem(const Problem &problem, const std::string &directory)
+  {
+    write_matrix_market(problem.A, directory + "/lcp_A.mtx");
+    write_vector(problem.b, directory + "/lcp_b.txt");
+    write_constraints(problem, directory + "/lcp_constraints.txt");
+  }
+} // namespace unilateral::lcp

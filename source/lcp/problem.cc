@@ -1,0 +1,264 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/lcp/problem.h>
+#include <unilateral/lcp/report.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+namespace unilateral::lcp
+{
+  std::vector<char>
+  Problem::constrained_mask() const
+  {
+    std::vector<char> mask(size(), 0);
+    for (const Index i : constrained)
+      mask[i] = 1;
+    return mask;
+  }
+
+  Vector
+  Problem::full_lower_bound() const
+  {
+    Vector bound =
+      Vector::Constant(size(), -std::numeric_limits<double>::infinity());
+    for (Index k = 0; k < n_constrained(); ++k)
+      bound[constrained[k]] = lower_bound[k];
+    return bound;
+  }
+
+  void
+  check_and_normalise(Problem &problem)
+  {
+    const Index n = problem.size();
+    auto        fail = [](const std::string &what) { throw InputError(what); };
+
+    if (problem.A.rows() != problem.A.cols())
+      fail("LCP matrix A is not square: " + std::to_string(problem.A.rows()) +
+           " x " + std::to_string(problem.A.cols()));
+    if (problem.A.rows() != n)
+      fail("dimension mismatch: A is " + std::to_string(problem.A.rows()) +
+           " x " + std::to_string(problem.A.cols()) + " but b has " +
+           std::to_string(n) + " entries");
+    if (static_cast<Index>(problem.lower_bound.size()) !=
+        problem.n_constrained())
+      fail("dimension mismatch: " +
+           std::to_string(problem.n_constrained()) +
+           " constrained indices but " +
+           std::to_string(problem.lower_bound.size()) + " lower bounds");
+
+    for (Index i = 0; i < n; ++i)
+      if (!std::isfinite(problem.b[i]))
+        fail("b[" + std::to_string(i) + "] is not a finite number");
+    for (Index k = 0; k < problem.n_constrained(); ++k)
+      {
+        const Index i = problem.constrained[k];
+        if (i < 0 || i >= n)
+          fail("constrained index " + std::to_string(i) +
+               " is outside 0.." + std::to_string(n - 1));
+        if (std::isnan(problem.lower_bound[k]) ||
+            problem.lower_bound[k] == std::numeric_limits<double>::infinity())
+          fail("lower bound of index " + std::to_string(i) +
+               " is not a number or +infinity");
+      }
+
+    // Sort S (carrying the bounds along) and reject repeated indices.
+    {
+      std::vector<Index> order(problem.n_constrained());
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+        return problem.constrained[a] < problem.constrained[b];
+      });
+      std::vector<Index> sorted(order.size());
+      Vector             bounds(order.size());
+      for (std::size_t k = 0; k < order.size(); ++k)
+        {
+          sorted[k] = problem.constrained[order[k]];
+          bounds[k] = problem.lower_bound[order[k]];
+          if (k > 0 && sorted[k] == sorted[k - 1])
+            fail("constrained index " + std::to_string(sorted[k]) +
+                 " appears twice in S");
+        }
+      problem.constrained = std::move(sorted);
+      problem.lower_bound = std::move(bounds);
+    }
+
+    problem.A.makeCompressed();
+    double max_entry = 0;
+    for (Index j = 0; j < n; ++j)
+      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+        {
+          if (!std::isfinite(it.value()))
+            fail("A(" + std::to_string(it.row()) + "," + std::to_string(j) +
+                 ") is not a finite number");
+          max_entry = std::max(max_entry, std::abs(it.value()));
+        }
+
+    // Symmetry, relative to the largest entry.
+    {
+      const SparseMatrix transpose = problem.A.transpose();
+      const SparseMatrix difference = problem.A - transpose;
+      for (Index j = 0; j < n; ++j)
+        for (SparseMatrix::InnerIterator it(difference, j); it; ++it)
+          if (std::abs(it.value()) > 1e-12 * max_entry)
+            {
+              std::ostringstream message;
+              message << "A is not symmetric: A(" << it.row() << "," << j
+                      << ") - A(" << j << "," << it.row()
+                      << ") = " << it.value()
+                      << "; the LCP needs a symmetric positive semidefinite A";
+              fail(message.str());
+            }
+    }
+
+    // Every diagonal entry must be in the pattern (the factorisations modify
+    // it in place) and nonnegative (a necessary condition for A >= 0).
+    bool diagonal_complete = true;
+    for (Index j = 0; j < n && diagonal_complete; ++j)
+      {
+        bool found = false;
+        for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+          if (it.row() == j)
+            {
+              found = true;
+              if (it.value() < 0)
+                {
+                  std::ostringstream message;
+                  message << "A(" << j << "," << j << ") = " << it.value()
+                          << " < 0: A is not positive semidefinite";
+                  fail(message.str());
+                }
+            }
+        diagonal_complete = found;
+      }
+    if (!diagonal_complete)
+      {
+        std::vector<Eigen::Triplet<double, Index>> entries;
+        entries.reserve(problem.A.nonZeros() + n);
+        for (Index j = 0; j < n; ++j)
+          {
+            entries.emplace_back(j, j, 0.0);
+            for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+              entries.emplace_back(it.row(), j, it.value());
+          }
+        problem.A.setFromTriplets(entries.begin(), entries.end());
+        problem.A.makeCompressed();
+      }
+  }
+
+  double
+  energy(const Problem &problem, const Vector &u)
+  {
+    return 0.5 * u.dot(problem.A * u) - problem.b.dot(u);
+  }
+
+  Vector
+  multiplier(const Problem &problem, const Vector &u)
+  {
+    const Vector      residual = problem.A * u - problem.b;
+    Vector            lambda   = Vector::Zero(problem.size());
+    for (const Index i : problem.constrained)
+      lambda[i] = residual[i];
+    return lambda;
+  }
+
+  double
+  KktResiduals::max() const
+  {
+    return std::max({stationarity,
+                     primal_feasibility,
+                     dual_feasibility,
+                     complementarity});
+  }
+
+  KktResiduals
+  kkt_residuals(const Problem &problem, const Vector &u)
+  {
+    const Index  n      = problem.size();
+    const Vector lambda = problem.A * u - problem.b;
+
+    // |A| |u|: the size of the terms that cancel in A u.
+    Vector abs_product = Vector::Zero(n);
+    for (Index j = 0; j < n; ++j)
+      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+        abs_product[it.row()] += std::abs(it.value() * u[j]);
+
+    double force_scale =
+      problem.b.lpNorm<Eigen::Infinity>() +
+      (n > 0 ? abs_product.lpNorm<Eigen::Infinity>() : 0.0);
+    double displacement_scale =
+      (n > 0 ? u.lpNorm<Eigen::Infinity>() : 0.0) +
+      (problem.n_constrained() > 0 ?
+         problem.lower_bound.lpNorm<Eigen::Infinity>() :
+         0.0);
+    if (force_scale == 0)
+      force_scale = 1;
+    if (displacement_scale == 0)
+      displacement_scale = 1;
+
+    KktResiduals      result;
+    const std::vector<char> mask = problem.constrained_mask();
+    for (Index i = 0; i < n; ++i)
+      if (!mask[i])
+        result.stationarity =
+          std::max(result.stationarity, std::abs(lambda[i]));
+    for (Index k = 0; k < problem.n_constrained(); ++k)
+      {
+        const Index  i     = problem.constrained[k];
+        const double slack = u[i] - problem.lower_bound[k];
+        result.primal_feasibility =
+          std::max(result.primal_feasibility, -slack);
+        result.dual_feasibility =
+          std::max(result.dual_feasibility, -lambda[i]);
+        result.complementarity =
+          std::max(result.complementarity, std::abs(slack * lambda[i]));
+      }
+    result.stationarity /= force_scale;
+    result.primal_feasibility /= displacement_scale;
+    result.dual_feasibility /= force_scale;
+    result.complementarity /= (force_scale * displacement_scale);
+    return result;
+  }
+
+  std::string
+  to_string(const Status status)
+  {
+    switch (status)
+      {
+        case Status::converged:
+          return "converged";
+        case Status::iteration_limit:
+          return "iteration limit";
+        case Status::infeasible:
+          return "infeasible";
+        case Status::singular:
+          return "singular";
+        case Status::inaccurate:
+          return "inaccurate";
+      }
+    return "unknown";
+  }
+
+  void
+  Report::add_time(const std::string &phase, const double seconds)
+  {
+    for (auto &entry : phase_times)
+      if (entry.first == phase)
+        {
+          entry.second += seconds;
+          return;
+        }
+    phase_times.emplace_back(phase, seconds);
+  }
+
+  double
+  Report::total_time() const
+  {
+    double total = 0;
+    for (const auto &entry : phase_times)
+      total += entry.second;
+    return total;
+  }
+} // namespace unilateral::lcp

@@ -1,0 +1,267 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/lcp/schur_complement.h>
+#include <unilateral/lcp/solver.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+namespace unilateral::lcp
+{
+  std::vector<SolverInfo> &
+  SolverRegistry::entries()
+  {
+    static std::vector<SolverInfo> registered;
+    return registered;
+  }
+
+  bool
+  SolverRegistry::add(SolverInfo info)
+  {
+    entries().push_back(std::move(info));
+    return true;
+  }
+
+  const SolverInfo &
+  SolverRegistry::get(const std::string &name)
+  {
+    for (const auto &info : entries())
+      if (info.name == name)
+        return info;
+    throw InputError("parameter 'Solver/Method' = " + name +
+                     ": unknown method; choose one of " + selection());
+  }
+
+  std::vector<std::string>
+  SolverRegistry::names()
+  {
+    std::vector<std::string> result;
+    for (const auto &info : entries())
+      result.push_back(info.name);
+    return result;
+  }
+
+  std::string
+  SolverRegistry::selection()
+  {
+    std::string result;
+    for (const auto &info : entries())
+      result += (result.empty() ? "" : "|") + info.name;
+    return result;
+  }
+
+  std::string
+  SolverRegistry::documentation()
+  {
+    std::string result;
+    for (const auto &info : entries())
+      result += "  " + info.name + ": " + info.description + "\n";
+    return result;
+  }
+
+  namespace
+  {
+    void
+    merge_counters(Counters &into, const Counters &from)
+    {
+      into.symbolic_analyses += from.symbolic_analyses;
+      into.numeric_factorisations += from.numeric_factorisations;
+      into.factorisation_updates += from.factorisation_updates;
+      into.triangular_solves += from.triangular_solves;
+      into.matrix_vector_products += from.matrix_vector_products;
+    }
+
+    void
+    merge_times(Report &into, const Report &from, const std::string &prefix)
+    {
+      for (const auto &[phase, seconds] : from.phase_times)
+        into.add_time(prefix + phase, seconds);
+    }
+
+    // The method alone on the problem as given (no regularisation).
+    void
+    run_method(const SolverInfo       &info,
+               const Problem          &problem,
+               const SolverParameters &parameters,
+               Solution               &solution,
+               Report                 &report,
+               std::ostream           *progress)
+    {
+      if (info.dense &&
+          static_cast<unsigned int>(problem.size()) > parameters.max_dense_size)
+        throw InputError(
+          "method '" + info.name + "' is dense and the LCP has " +
+          std::to_string(problem.size()) +
+          " unknowns, more than 'Solver/Maximum dense size' = " +
+          std::to_string(parameters.max_dense_size) +
+          ": use 'Schur complement = true' (graves works on S only) or a "
+          "sparse method");
+      auto solver = info.create(parameters);
+      solver->solve(problem, solution, report, progress);
+    }
+
+    Report
+    solve_full(const Problem          &problem,
+               const SolverParameters &parameters,
+               Solution               &solution,
+               std::ostream           *progress,
+               const double            auto_regularisation)
+    {
+      const SolverInfo &info = SolverRegistry::get(parameters.method);
+      Report            report;
+      report.solver = info.name;
+
+      const double relative_eps = parameters.regularisation >= 0 ?
+                                    parameters.regularisation :
+                                    auto_regularisation;
+      if (!info.needs_definite_matrix || relative_eps == 0)
+        {
+          PhaseTimer timer(report, "solve");
+          run_method(info, problem, parameters, solution, report, progress);
+          return report;
+        }
+
+      // Stage 1: the regularised problem A + eps d I.
+      Problem regularised;
+      {
+        PhaseTimer timer(report, "regularise");
+        regularised = problem;
+        const double mean_diagonal =
+          problem.size() > 0 ? problem.A.diagonal().mean() : 1.0;
+        report.regularisation =
+          relative_eps * (mean_diagonal > 0 ? mean_diagonal : 1.0);
+        for (Index j = 0; j < regularised.size(); ++j)
+          regularised.A.coeffRef(j, j) += report.regularisation;
+      }
+      {
+        PhaseTimer timer(report, "solve");
+        run_method(info, regularised, parameters, solution, report, progress);
+      }
+      if (!report.converged() || !parameters.projection)
+        return report;
+
+      // Stage 2: the projection, PDAS on A from u_eps.
+      PhaseTimer timer(report, "projection");
+      Report     projection;
+      run_method(SolverRegistry::get("pdas"),
+                 problem,
+                 parameters,
+                 solution,
+                 projection,
+                 progress);
+      report.projected             = true;
+      report.projection_iterations = projection.iterations;
+      merge_counters(report.counters, projection.counters);
+      if (!projection.converged())
+        {
+          report.status  = projection.status;
+          report.message = "projection step: " + projection.message;
+        }
+      return report;
+    }
+  } // namespace
+
+  Report
+  solve_lcp(const Problem          &problem,
+            const SolverParameters &parameters,
+            Solution               &solution,
+            std::ostream           *progress,
+            const double            auto_regularisation)
+  {
+    Report report;
+    if (!parameters.schur_complement)
+      report =
+        solve_full(problem, parameters, solution, progress, auto_regularisation);
+    else
+      {
+        report.solver = SolverRegistry::get(parameters.method).name + "_sc";
+        std::unique_ptr<SchurComplement> schur;
+        {
+          PhaseTimer timer(report, "schur complement");
+          schur = std::make_unique<SchurComplement>(problem,
+                                                    parameters.max_dense_size,
+                                                    report.counters);
+        }
+        if (schur->singular())
+          {
+            report.status  = Status::singular;
+            report.message = "A_EE (the unconstrained block) is not positive "
+                             "definite, so the Schur complement does not "
+                             "exist; solve the full LCP instead";
+            solution.u     = Vector::Zero(problem.size());
+          }
+        else
+          {
+            // Ainsworth & Mihai regularise the (scaled) Schur complement with
+            // eps ~ n_c * machine epsilon.
+            const double sc_eps =
+              problem.n_constrained() * std::numeric_limits<double>::epsilon();
+            Solution reduced_solution;
+            if (solution.u.size() == problem.size())
+              {
+                reduced_solution.u.resize(problem.n_constrained());
+                for (Index k = 0; k < problem.n_constrained(); ++k)
+                  reduced_solution.u[k] = solution.u[problem.constrained[k]];
+              }
+            SolverParameters reduced_parameters = parameters;
+            reduced_parameters.schur_complement = false;
+            const Report reduced_report = solve_full(schur->reduced_problem(),
+                                                     reduced_parameters,
+                                                     reduced_solution,
+                                                     progress,
+                                                     sc_eps);
+            report.status                = reduced_report.status;
+            report.message               = reduced_report.message;
+            report.iterations            = reduced_report.iterations;
+            report.projected             = reduced_report.projected;
+            report.projection_iterations = reduced_report.projection_iterations;
+            report.regularisation        = reduced_report.regularisation;
+            merge_counters(report.counters, reduced_report.counters);
+            merge_times(report, reduced_report, "");
+            PhaseTimer timer(report, "recover u_E");
+            solution.u = schur->recover(reduced_solution.u);
+          }
+      }
+
+    // The final check, always against the original problem.
+    {
+      PhaseTimer timer(report, "kkt check");
+      if (solution.u.size() != problem.size())
+        solution.u = Vector::Zero(problem.size());
+      solution.lambda = multiplier(problem, solution.u);
+      // An index is active if u sits exactly at its bound (active-set and
+      // pivoting methods put it there) or, for interior-point iterates that
+      // never reach a bound, if its slack is smaller than its multiplier in
+      // the same units (slack times the diagonal of A).
+      solution.active_set.clear();
+      for (Index k = 0; k < problem.n_constrained(); ++k)
+        {
+          const Index  i     = problem.constrained[k];
+          const double slack = solution.u[i] - problem.lower_bound[k];
+          const double scale =
+            problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : 1.0;
+          if (slack == 0 || slack * scale < solution.lambda[i])
+            solution.active_set.push_back(i);
+        }
+      report.n_active = static_cast<unsigned int>(solution.active_set.size());
+      report.kkt      = kkt_residuals(problem, solution.u);
+      report.energy   = energy(problem, solution.u);
+      ++report.counters.matrix_vector_products;
+    }
+    if (report.status == Status::converged &&
+        !(report.kkt.max() <= parameters.kkt_tolerance))
+      {
+        std::ostringstream message;
+        message << std::setprecision(3)
+                << "the method's stopping test passed but the relative KKT "
+                   "residual is "
+                << report.kkt.max() << " > 'Solver/KKT tolerance' = "
+                << parameters.kkt_tolerance;
+        report.status  = Status::inaccurate;
+        report.message = message.str();
+      }
+    return report;
+  }
+} // namespace unilateral::lcp

@@ -1,0 +1,241 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/lcp/solver.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace unilateral::lcp
+{
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::Selection;
+
+  void
+  SolverParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Method",
+                        "pdas",
+                        Selection(SolverRegistry::selection()),
+                        "The LCP algorithm.\n" +
+                          SolverRegistry::documentation());
+      prm.declare_entry(
+        "Schur complement",
+        "false",
+        Bool(),
+        "Eliminate the unconstrained unknowns E and solve the reduced, dense "
+        "LCP on the constrained set S (Ainsworth & Mihai, eqs. 3.13-3.18), "
+        "then recover u_E = A_EE^-1 (b_E - A_ES u_S). Needs A_EE nonsingular "
+        "and |S| <= 'Maximum dense size'.");
+      prm.declare_entry(
+        "Regularisation",
+        "auto",
+        dealii::Patterns::Anything(),
+        "eps of the regularised matrix A + eps d I, where d is the mean of "
+        "the diagonal of A (so eps is unit-free). Used only by methods that "
+        "need a positive definite matrix (psor, lssnn, pdas, block_pivoting), "
+        "followed by the projection step. 'auto' takes the scene's choice: "
+        "1e-9 for masonry (whose A is singular: blocks are free to move), 0 "
+        "for the plate and for LCP files. A number >= 0 overrides it.");
+      prm.declare_entry(
+        "Projection",
+        "true",
+        Bool(),
+        "After solving the regularised problem, run PDAS on the original A "
+        "from u_eps (Ainsworth & Mihai, Section 4): it recovers the exact "
+        "solution, usually in one iteration.");
+      prm.declare_entry(
+        "Maximum iterations",
+        "0",
+        Integer(0),
+        "Iteration limit of the method; 0 takes each method's default "
+        "(psor: 100000 sweeps, lssnn: 3|S| + 100, pdas/pdpc/interior_point: "
+        "500, block_pivoting: 10|S| + 100, graves: 10|S| + 100). Reaching it "
+        "is reported as status 'iteration limit', never as a solution.");
+      prm.declare_entry(
+        "Maximum dense size",
+        "6000",
+        Integer(1),
+        "Largest number of unknowns a dense path takes (graves, Schur "
+        "complement); larger problems are refused with a message instead of "
+        "exhausting memory. Memory is about 16 n^2 bytes.");
+      prm.declare_entry(
+        "KKT tolerance",
+        "1e-8",
+        Double(0),
+        "A method that reports convergence while the relative KKT residuals "
+        "of its answer exceed this gets status 'inaccurate': no wrong answer "
+        "is printed as converged.");
+
+      prm.enter_subsection("PSOR");
+      prm.declare_entry("Relaxation",
+                        "0",
+                        Double(0, 2),
+                        "omega in (0, 2); 0 takes 2 / (1 + sin(pi / n)) as "
+                        "Ainsworth & Mihai.");
+      prm.declare_entry("Tolerance",
+                        "0",
+                        Double(0),
+                        "Stop when ||u_old - u|| / ||u|| < tolerance; 0 takes "
+                        "n * machine epsilon as Ainsworth & Mihai.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("PDAS");
+      prm.declare_entry("Tau",
+                        "1e-3",
+                        Double(0),
+                        "tau > 0 of the active-set test u_i - l_i - tau "
+                        "lambda_i < 0 (Ainsworth & Mihai: tau ~ 1e-3). Also "
+                        "used by the projection step.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("PDPC");
+      prm.declare_entry("Initial point",
+                        "1e-4",
+                        Double(0),
+                        "u0 = eps e, Sigma0 = -eps e (slacks and multipliers of "
+                        "the scaled problem); Ainsworth & Mihai take eps in "
+                        "(1e-6, 1e-2).");
+      prm.declare_entry("Complementarity tolerance",
+                        "0",
+                        Double(0),
+                        "tol1 on |Sigma_S^T u_S| / n_c; 0 takes n_c * machine "
+                        "epsilon.");
+      prm.declare_entry("Residual tolerance",
+                        "0",
+                        Double(0),
+                        "tol2 on ||b - A u - Sigma||_2; 0 takes n * "
+                        "sqrt(machine epsilon) (scaled problem).");
+      prm.declare_entry("Diagonal scaling",
+                        "true",
+                        Bool(),
+                        "Scale A to unit diagonal first, as Ainsworth & Mihai "
+                        "do to keep Step 4 solvable.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Interior point");
+      prm.declare_entry("Centering",
+                        "0.1",
+                        Double(0, 1),
+                        "delta in (0, 1) of mu_k = delta gap / |J1| (eq. 42 of "
+                        "Fernandes et al., who do not state its value).");
+      prm.declare_entry("Step factor",
+                        "0.99995",
+                        Double(0, 1),
+                        "beta of the step alpha = min(1, beta alpha_max) (eq. "
+                        "50; the paper takes 0.99995).");
+      prm.declare_entry("Residual tolerance",
+                        "1e-10",
+                        Double(0),
+                        "epsilon_1 on ||C z - F - w||_2 (eq. 55).");
+      prm.declare_entry("Complementarity tolerance",
+                        "1e-8",
+                        Double(0),
+                        "epsilon_2 on (z - psi)^T w (eq. 56).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Block pivoting");
+      prm.declare_entry("p",
+                        "10",
+                        Integer(1),
+                        "Block iterations allowed without a decrease of the "
+                        "infeasibility count before single pivots take over "
+                        "(Judice & Pires; the paper takes 10).");
+      prm.declare_entry("Tolerance",
+                        "1e-6",
+                        Double(0),
+                        "epsilon of the infeasibility set H (eq. 67).");
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      method           = prm.get("Method");
+      schur_complement = prm.get_bool("Schur complement");
+      const std::string eps = prm.get("Regularisation");
+      if (eps == "auto")
+        regularisation = -1;
+      else
+        {
+          std::size_t used = 0;
+          try
+            {
+              regularisation = std::stod(eps, &used);
+            }
+          catch (const std::exception &)
+            {
+              used = 0;
+            }
+          check_parameter(used == eps.size() && used > 0,
+                          "Solver",
+                          "Regularisation",
+                          eps,
+                          "must be 'auto' or a number >= 0");
+          check_parameter(regularisation >= 0,
+                          "Solver",
+                          "Regularisation",
+                          eps,
+                          "must be >= 0 (eps < 0 would make A + eps I "
+                          "indefinite)");
+        }
+      projection     = prm.get_bool("Projection");
+      max_iterations = prm.get_integer("Maximum iterations");
+      max_dense_size = prm.get_integer("Maximum dense size");
+      kkt_tolerance  = prm.get_double("KKT tolerance");
+
+      prm.enter_subsection("PSOR");
+      psor.omega     = prm.get_double("Relaxation");
+      psor.tolerance = prm.get_double("Tolerance");
+      check_parameter(psor.omega < 2,
+                      "Solver/PSOR",
+                      "Relaxation",
+                      psor.omega,
+                      "must be in (0, 2) for convergence, or 0 for automatic");
+      prm.leave_subsection();
+
+      prm.enter_subsection("PDAS");
+      pdas.tau = prm.get_double("Tau");
+      check_parameter(pdas.tau > 0, "Solver/PDAS", "Tau", pdas.tau,
+                      "must be > 0");
+      prm.leave_subsection();
+
+      prm.enter_subsection("PDPC");
+      pdpc.initial_point      = prm.get_double("Initial point");
+      pdpc.tolerance_gap      = prm.get_double("Complementarity tolerance");
+      pdpc.tolerance_residual = prm.get_double("Residual tolerance");
+      pdpc.diagonal_scaling   = prm.get_bool("Diagonal scaling");
+      check_parameter(pdpc.initial_point > 0, "Solver/PDPC", "Initial point",
+                      pdpc.initial_point, "must be > 0 (interior start)");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Interior point");
+      interior_point.centering   = prm.get_double("Centering");
+      interior_point.step_factor = prm.get_double("Step factor");
+      interior_point.residual_tolerance =
+        prm.get_double("Residual tolerance");
+      interior_point.complementarity_tolerance =
+        prm.get_double("Complementarity tolerance");
+      check_parameter(interior_point.centering > 0 &&
+                        interior_point.centering < 1,
+                      "Solver/Interior point", "Centering",
+                      interior_point.centering, "must be in (0, 1)");
+      check_parameter(interior_point.step_factor > 0 &&
+                        interior_point.step_factor < 1,
+                      "Solver/Interior point", "Step factor",
+                      interior_point.step_factor, "must be in (0, 1)");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Block pivoting");
+      block_pivoting.p         = prm.get_integer("p");
+      block_pivoting.tolerance = prm.get_double("Tolerance");
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+  }
+} // namespace unilateral::lcp

@@ -1,0 +1,163 @@
+#include <unilateral/lcp/sparse_cholesky.h>
+
+#include <cholmod.h>
+
+#include <stdexcept>
+
+namespace unilateral::lcp
+{
+  struct SparseCholesky::Implementation
+  {
+    cholmod_common common;
+    cholmod_factor *factor       = nullptr;
+    bool            factor_valid = false;
+    // Fingerprint of the analysed pattern (size, nonzeros, hash).
+    Index           pattern_size = -1;
+    Index           pattern_nonzeros = -1;
+    std::uint64_t   pattern_hash = 0;
+
+    Implementation()
+    {
+      cholmod_start(&common);
+      // Errors become return codes we check, never prints to stderr.
+      common.print          = 0;
+      common.error_handler  = nullptr;
+      common.quick_return_if_not_posdef = 1;
+    }
+
+    ~Implementation()
+    {
+      if (factor != nullptr)
+        cholmod_free_factor(&factor, &common);
+      cholmod_finish(&common);
+    }
+
+    // A view of an Eigen matrix as a CHOLMOD matrix (no copy).
+    static cholmod_sparse
+    view(const SparseMatrix &A)
+    {
+      cholmod_sparse matrix{};
+      matrix.nrow   = A.rows();
+      matrix.ncol   = A.cols();
+      matrix.nzmax  = A.nonZeros();
+      matrix.p      = const_cast<Index *>(A.outerIndexPtr());
+      matrix.i      = const_cast<Index *>(A.innerIndexPtr());
+      matrix.x      = const_cast<double *>(A.valuePtr());
+      matrix.stype  = 1; // symmetric, upper triangle used
+      matrix.itype  = CHOLMOD_INT;
+      matrix.xtype  = CHOLMOD_REAL;
+      matrix.dtype  = CHOLMOD_DOUBLE;
+      matrix.sorted = 1;
+      matrix.packed = 1;
+      return matrix;
+    }
+
+    static std::uint64_t
+    hash_pattern(const SparseMatrix &A)
+    {
+      std::uint64_t hash = 1469598103934665603ull;
+      auto          mix  = [&hash](std::uint64_t value) {
+        hash ^= value;
+        hash *= 1099511628211ull;
+      };
+      for (Index j = 0; j <= A.cols(); ++j)
+        mix(A.outerIndexPtr()[j]);
+      for (Index k = 0; k < A.nonZeros(); ++k)
+        mix(A.innerIndexPtr()[k]);
+      return hash;
+    }
+  };
+
+  SparseCholesky::SparseCholesky(Counters &counters)
+    : implementation(std::make_unique<Implementation>())
+    , counters(counters)
+  {}
+
+  SparseCholesky::~SparseCholesky() = default;
+
+  bool
+  SparseCholesky::factorise(const SparseMatrix &A)
+  {
+    if (!A.isCompressed())
+      throw std::logic_error("SparseCholesky needs a compressed matrix");
+    auto          &impl   = *implementation;
+    cholmod_sparse matrix = Implementation::view(A);
+
+    const std::uint64_t hash = Implementation::hash_pattern(A);
+    if (impl.factor == nullptr || impl.pattern_size != A.rows() ||
+        impl.pattern_nonzeros != A.nonZeros() || impl.pattern_hash != hash)
+      {
+        if (impl.factor != nullptr)
+          cholmod_free_factor(&impl.factor, &impl.common);
+        impl.factor = cholmod_analyze(&matrix, &impl.common);
+        if (impl.factor == nullptr)
+          throw std::runtime_error(
+            "CHOLMOD analysis failed (status " +
+            std::to_string(impl.common.status) + "): out of memory?");
+        impl.pattern_size     = A.rows();
+        impl.pattern_nonzeros = A.nonZeros();
+        impl.pattern_hash     = hash;
+        ++counters.symbolic_analyses;
+      }
+
+    cholmod_factorize(&matrix, impl.factor, &impl.common);
+    ++counters.numeric_factorisations;
+    impl.factor_valid = (impl.common.status == CHOLMOD_OK &&
+                         impl.factor->minor == impl.factor->n);
+    if (impl.common.status == CHOLMOD_OUT_OF_MEMORY)
+      throw std::runtime_error("CHOLMOD factorisation ran out of memory");
+    return impl.factor_valid;
+  }
+
+  bool
+  SparseCholesky::has_factor() const
+  {
+    return implementation->factor_valid;
+  }
+
+  double
+  SparseCholesky::factor_nonzeros() const
+  {
+    const auto &impl = *implementation;
+    if (impl.factor == nullptr)
+      return 0;
+    if (impl.factor->is_super)
+      return static_cast<double>(impl.factor->xsize);
+    return static_cast<double>(impl.factor->nzmax);
+  }
+
+  void
+  SparseCholesky::solve(const Vector &b, Vector &x) const
+  {
+    DenseMatrix B = b;
+    DenseMatrix X;
+    solve(B, X);
+    x = X.col(0);
+  }
+
+  void
+  SparseCholesky::solve(const DenseMatrix &B, DenseMatrix &X) const
+  {
+    auto &impl = *implementation;
+    if (!impl.factor_valid)
+      throw std::logic_error("SparseCholesky::solve without a valid factor");
+    cholmod_dense rhs{};
+    rhs.nrow  = B.rows();
+    rhs.ncol  = B.cols();
+    rhs.nzmax = B.size();
+    rhs.d     = B.rows();
+    rhs.x     = const_cast<double *>(B.data());
+    rhs.xtype = CHOLMOD_REAL;
+    rhs.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense *solution =
+      cholmod_solve(CHOLMOD_A, impl.factor, &rhs, &impl.common);
+    if (solution == nullptr)
+      throw std::runtime_error("CHOLMOD solve failed (status " +
+                               std::to_string(impl.common.status) + ")");
+    X = Eigen::Map<DenseMatrix>(static_cast<double *>(solution->x),
+                                B.rows(),
+                                B.cols());
+    cholmod_free_dense(&solution, &impl.common);
+    counters.triangular_solves += static_cast<unsigned int>(B.cols());
+  }
+} // namespace unilateral::lcp

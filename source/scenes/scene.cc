@@ -1,0 +1,156 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/lcp/io.h>
+#include <unilateral/scenes/scene.h>
+
+#include <iomanip>
+#include <ostream>
+
+namespace unilateral
+{
+  std::vector<SceneInfo> &
+  SceneRegistry::entries()
+  {
+    static std::vector<SceneInfo> registered;
+    return registered;
+  }
+
+  bool
+  SceneRegistry::add(SceneInfo info)
+  {
+    entries().push_back(std::move(info));
+    return true;
+  }
+
+  const SceneInfo &
+  SceneRegistry::get(const std::string &name)
+  {
+    for (const auto &info : entries())
+      if (info.name == name)
+        return info;
+    throw InputError("parameter 'Scene' = " + name +
+                     ": unknown scene; choose one of " + selection());
+  }
+
+  const std::vector<SceneInfo> &
+  SceneRegistry::all()
+  {
+    return entries();
+  }
+
+  std::string
+  SceneRegistry::selection()
+  {
+    std::string result;
+    for (const auto &info : entries())
+      result += (result.empty() ? "" : "|") + info.name;
+    return result;
+  }
+
+  lcp::Report
+  solve(RunContext         &context,
+        const Scene        &scene,
+        const lcp::Problem &problem,
+        lcp::Solution      &solution)
+  {
+    dealii::TimerOutput::Scope scope(*context.timer, "solve");
+    if (context.progress != nullptr)
+      *context.progress << "  solving with " << context.solver.method
+                        << (context.solver.schur_complement ?
+                              " on the Schur complement" :
+                              "")
+                        << std::endl;
+    return lcp::solve_lcp(problem,
+                          context.solver,
+                          solution,
+                          context.progress,
+                          scene.auto_regularisation());
+  }
+
+  JsonObject
+  summary_base(const RunContext   &context,
+               const std::string  &scene,
+               const lcp::Problem &problem,
+               const lcp::Report  &report)
+  {
+    JsonObject summary;
+    summary.set("scene", scene)
+      .set("run_name", context.run_name)
+      .set("solver", report.solver)
+      .set("schur_complement", context.solver.schur_complement)
+      .set("n_unknowns", problem.size())
+      .set("n_constraints", problem.n_constrained())
+      .set("n_active", report.n_active)
+      .set("iterations", report.iterations)
+      .set("projection_iterations", report.projection_iterations)
+      .set("regularisation", report.regularisation)
+      .set("converged", report.converged())
+      .set("status", lcp::to_string(report.status))
+      .set("message", report.message)
+      .set("energy", report.energy);
+    JsonObject &kkt = summary.object("kkt");
+    kkt.set("stationarity", report.kkt.stationarity)
+      .set("primal_feasibility", report.kkt.primal_feasibility)
+      .set("dual_feasibility", report.kkt.dual_feasibility)
+      .set("complementarity", report.kkt.complementarity)
+      .set("max", report.kkt.max());
+
+    JsonObject &time = summary.object("time");
+    if (context.timer != nullptr)
+      for (const auto &[section, seconds] : context.timer->get_summary_data(
+             dealii::TimerOutput::total_wall_time))
+        time.set(section, seconds);
+    JsonObject &solver_time = time.object("solver");
+    for (const auto &[phase, seconds] : report.phase_times)
+      solver_time.set(phase, seconds);
+
+    JsonObject &counters = summary.object("counters");
+    counters.set("symbolic_analyses", report.counters.symbolic_analyses)
+      .set("numeric_factorisations", report.counters.numeric_factorisations)
+      .set("factorisation_updates", report.counters.factorisation_updates)
+      .set("triangular_solves", report.counters.triangular_solves)
+      .set("matrix_vector_products", report.counters.matrix_vector_products);
+    return summary;
+  }
+
+  void
+  write_summary(const RunContext &context, const JsonObject &summary)
+  {
+    summary.write_file((context.output_directory / "summary.json").string());
+  }
+
+  void
+  print_solver_summary(std::ostream       &out,
+                       const lcp::Problem &problem,
+                       const lcp::Report  &report)
+  {
+    const auto flags = out.flags();
+    const auto precision = out.precision();
+    out << "  LCP: " << problem.size() << " unknowns, "
+        << problem.n_constrained() << " constraints\n"
+        << "  solver " << report.solver << ": " << lcp::to_string(report.status)
+        << " after " << report.iterations << " iterations";
+    if (report.projected)
+      out << " + " << report.projection_iterations << " projection";
+    out << ", " << report.n_active << " active\n";
+    if (!report.message.empty())
+      out << "  note: " << report.message << "\n";
+    out << std::scientific << std::setprecision(6)
+        << "  energy " << report.energy << "\n"
+        << std::setprecision(1) << "  KKT residuals: stationarity "
+        << report.kkt.stationarity << ", primal "
+        << report.kkt.primal_feasibility << ", dual "
+        << report.kkt.dual_feasibility << ", complementarity "
+        << report.kkt.complementarity << "\n";
+    out.flags(flags);
+    out.precision(precision);
+  }
+
+  void
+  export_lcp_if_requested(const RunContext &context, const lcp::Problem &problem)
+  {
+    if (!context.export_lcp)
+      return;
+    dealii::TimerOutput::Scope scope(*context.timer, "export LCP");
+    lcp::write_problem(problem, context.output_directory.string());
+  }
+} // namespace unilateral
