@@ -1,0 +1,146 @@
+#pragma once
+
+#include <unilateral/lcp/problem.h>
+#include <unilateral/lcp/report.h>
+#include <unilateral/scenes/plate/assembly.h>
+#include <unilateral/scenes/plate/parameters.h>
+#include <unilateral/scenes/scene.h>
+
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace unilateral::plate
+{
+  /**
+   * The "plate" scene: a thin elastic plate [0, L1] x [0, L2], clamped on
+   * its boundary, pressed by a transverse force f onto a rigid obstacle psi
+   * (Fernandes, Figueiredo & Judice 2002). Kirchhoff bending, discretised
+   * with n1 x n2 Bogner-Fox-Schmit rectangles (4 DOFs per node: w, w_x, w_y,
+   * w_xy; fe/bogner_fox_schmit.h).
+   *
+   * Mapping onto the LCP of lcp/problem.h (the paper's MLCP (32)-(35)):
+   *  - u = z_J, the nodal DOFs that are not fixed by the clamping: J. The
+   *    fixed DOFs L (w, w_x, w_y at boundary nodes, and w_xy too when fully
+   *    clamped) are eliminated, so the LCP has exactly |J| unknowns,
+   *    numbered 0..|J|-1 in deal.II's DOF order;
+   *  - A = C_JJ, the bending stiffness D [nu Delta z Delta w + (1 - nu)
+   *    z_,ab w_,ab] with D = E t^3 / (12 (1 - nu^2)); symmetric positive
+   *    definite, so the automatic regularisation is 0;
+   *  - b = F_J, the load int f w;
+   *  - S = J1, the w DOFs of the interior nodes, with lower bound
+   *    l = psi(node): the obstacle acts at the nodes, as in the paper (24);
+   *  - lambda = A u - b is the paper's w: the contact force at each interior
+   *    node (kg), >= 0 and zero where the plate does not touch.
+   * cn, the number of interior nodes in contact, is the size of the solver's
+   * active set.
+   *
+   * Output (unless Output/Write VTU = false): plate.vtu/.pvd, the bicubic
+   * deflection interpolated exactly into FE_Q(3) and written with
+   * subdivisions, with its slopes, the obstacle, the gap w - psi and the
+   * bending moments; nodes.vtu/.pvd, the LCP at the mesh nodes (w, w_x,
+   * w_y, w_xy, psi, gap, contact 0/1, contact force). Between nodes the gap
+   * can be slightly negative: the discrete plate only has to stay above psi
+   * at the nodes.
+   */
+  class PlateScene : public Scene
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    explicit PlateScene(dealii::ParameterHandler &prm);
+
+    lcp::Report
+    run(RunContext &context) override;
+
+    double
+    auto_regularisation() const override
+    {
+      return 0;
+    }
+
+    /// What a run found, in the paper's terms (valid after run()).
+    struct Results
+    {
+      unsigned int n_elements = 0; ///< n1 n2
+      unsigned int n_free     = 0; ///< |J|
+      unsigned int n_bounds   = 0; ///< |J1|
+      unsigned int n_contact  = 0; ///< cn
+      double       rigidity   = 0; ///< D (kg mm)
+      /// Smallest nodal deflection (mm), and w at the plate's centre.
+      double min_deflection    = 0;
+      double centre_deflection = 0;
+    };
+
+    const Results &
+    results() const
+    {
+      return results_;
+    }
+
+    /// All BFS DOFs of the solution (deal.II numbering, fixed ones zero).
+    const dealii::Vector<double> &
+    nodal_values() const
+    {
+      return dof_values;
+    }
+
+    const dealii::DoFHandler<2> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+  private:
+    void
+    make_grid();
+
+    void
+    setup_system();
+
+    void
+    assemble_system();
+
+    lcp::Report
+    solve(RunContext &context);
+
+    void
+    compute_results(const lcp::Report &report);
+
+    /// In output.cc: the VTU/PVD files.
+    void
+    output_results(const RunContext &context) const;
+
+    void
+    print_summary(std::ostream &out, const lcp::Report &report) const;
+
+    void
+    write_summary(const RunContext &context, const lcp::Report &report) const;
+
+    Parameters                                   parameters;
+    double                                       rigidity;
+    std::unique_ptr<dealii::Function<2, double>> obstacle; ///< null: none
+    std::unique_ptr<dealii::Function<2, double>> force;
+
+    dealii::Triangulation<2> triangulation;
+    dealii::FESystem<2>      fe; ///< FE_Q(1)^4: numbers w, w_x, w_y, w_xy
+    dealii::DoFHandler<2>    dof_handler;
+
+    FreeDofs free_dofs;
+    /// Per index in J1 (in S order): the vertex index of the node.
+    std::vector<unsigned int> bound_vertex;
+
+    lcp::Problem  problem;
+    lcp::Solution solution;
+
+    dealii::Vector<double> dof_values;
+    Results                results_;
+  };
+} // namespace unilateral::plate

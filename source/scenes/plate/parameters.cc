@@ -1,0 +1,307 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/scenes/plate/parameters.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace unilateral::plate
+{
+  namespace
+  {
+    // The paper's obstacles (eq. 64) and forces (eq. 65), for x, y in mm on
+    // [0, 100]^2 and forces in kg/mm^2.
+    const std::map<std::string, std::string> named_obstacles = {
+      {"psi1", "-2"},
+      {"psi2", "-0.1 - (x/50 - 1)^2 * (y/100 - 0.5)^2"},
+      {"psi3",
+       "-0.5*(x/50 - 1)^2 - 0.02*(x/50 - 1) - 0.5/(1 + 30*(x/50 - 1)^2)"}};
+
+    const std::map<std::string, std::string> named_forces = {{"f1", "-1"},
+                                                             {"f2", "-5"},
+                                                             {"f3", "-10"}};
+
+    struct NamedMaterial
+    {
+      double youngs_modulus;
+      double poisson_ratio;
+    };
+
+    // The paper's materials (Section 4), E in kg/mm^2.
+    const std::map<std::string, NamedMaterial> named_materials = {
+      {"steel", {21e3, 0.28}},
+      {"bronze", {11e3, 0.31}},
+      {"lead", {1.8e3, 0.44}}};
+
+    const std::string obstacle_hint =
+      "use psi1, psi2, psi3, none or an expression in x and y such as "
+      "-0.5 - 0.001*x";
+    const std::string force_hint =
+      "use f1, f2, f3 or an expression in x and y such as -1 - 0.01*x";
+
+    // muparser reports a parse error on std::cerr before deal.II throws;
+    // the user should get our one line instead, so capture it while parsing.
+    class SilenceStandardError
+    {
+    public:
+      SilenceStandardError()
+        : saved(std::cerr.rdbuf(captured.rdbuf()))
+      {}
+
+      ~SilenceStandardError()
+      {
+        std::cerr.rdbuf(saved);
+      }
+
+    private:
+      std::ostringstream captured;
+      std::streambuf    *saved;
+    };
+  } // namespace
+
+  std::unique_ptr<dealii::Function<2, double>>
+  parse_function(const std::string &parameter,
+                 const std::string &expression,
+                 const std::string &hint)
+  {
+    if (expression.find_first_not_of(" \t") == std::string::npos)
+      throw InputError("parameter '" + parameter + "' is empty; " + hint);
+    auto function = std::make_unique<dealii::FunctionParser<2>>(1);
+    try
+      {
+        SilenceStandardError silence;
+        function->initialize("x,y", expression, {{"pi", M_PI}});
+        // deal.II parses lazily, at the first evaluation: force it here.
+        function->value(dealii::Point<2>());
+      }
+    catch (const std::exception &error)
+      {
+        throw InputError("parameter '" + parameter + "' = " + expression +
+                         ": not a valid expression in x and y (" +
+                         one_line_message(error) + "); " + hint);
+      }
+    return function;
+  }
+
+  void
+  Geometry::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry("Length x",
+                      "100",
+                      dealii::Patterns::Double(),
+                      "L1 (mm): the plate is [0, L1] x [0, L2]; > 0.");
+    prm.declare_entry("Length y",
+                      "100",
+                      dealii::Patterns::Double(),
+                      "L2 (mm); > 0.");
+    prm.declare_entry("Thickness",
+                      "2",
+                      dealii::Patterns::Double(),
+                      "t (mm); > 0. Enters through D = E t^3 / (12 (1 - nu^2)).");
+    prm.declare_entry("Elements x",
+                      "20",
+                      dealii::Patterns::Integer(),
+                      "n1: number of Bogner-Fox-Schmit rectangles in x; >= 1.");
+    prm.declare_entry("Elements y",
+                      "20",
+                      dealii::Patterns::Integer(),
+                      "n2: number of rectangles in y; >= 1.");
+    prm.declare_entry(
+      "Boundary condition",
+      "clamped",
+      dealii::Patterns::Selection("clamped|fully clamped"),
+      "clamped: w = w_x = w_y = 0 at boundary nodes and w_xy free, as in the "
+      "plate study (|J| = 4 (n1 - 1)(n2 - 1) + 2 (n1 + n2)); fully clamped: "
+      "w_xy = 0 there too, so the discrete plate is clamped along the whole "
+      "edge, not only at the nodes.");
+    prm.leave_subsection();
+  }
+
+  void
+  Geometry::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    length_x  = prm.get_double("Length x");
+    length_y  = prm.get_double("Length y");
+    thickness = prm.get_double("Thickness");
+    const long n1 = prm.get_integer("Elements x");
+    const long n2 = prm.get_integer("Elements y");
+    clamp_twist   = prm.get("Boundary condition") == "fully clamped";
+    prm.leave_subsection();
+
+    const std::string section = "Plate/Geometry";
+    check_parameter(length_x > 0, section, "Length x", length_x,
+                    "must be > 0 (mm)");
+    check_parameter(length_y > 0, section, "Length y", length_y,
+                    "must be > 0 (mm)");
+    check_parameter(thickness > 0, section, "Thickness", thickness,
+                    "must be > 0 (mm)");
+    check_parameter(n1 >= 1 && n1 <= 100000, section, "Elements x", n1,
+                    "must be an integer between 1 and 100000");
+    check_parameter(n2 >= 1 && n2 <= 100000, section, "Elements y", n2,
+                    "must be an integer between 1 and 100000");
+    n_x = static_cast<unsigned int>(n1);
+    n_y = static_cast<unsigned int>(n2);
+  }
+
+  void
+  Material::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    prm.declare_entry("Name",
+                      "steel",
+                      dealii::Patterns::Anything(),
+                      "steel (E = 21e3 kg/mm^2, nu = 0.28), bronze (11e3, "
+                      "0.31), lead (1.8e3, 0.44), or custom to take "
+                      "'Young's modulus' and 'Poisson's ratio' below (which "
+                      "are ignored for a named material).");
+    prm.declare_entry("Young's modulus",
+                      "21000",
+                      dealii::Patterns::Double(),
+                      "E (kg/mm^2) for Name = custom; > 0.");
+    prm.declare_entry("Poisson's ratio",
+                      "0.28",
+                      dealii::Patterns::Double(),
+                      "nu for Name = custom; in (-1, 0.5).");
+    prm.leave_subsection();
+  }
+
+  void
+  Material::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    name                 = prm.get("Name");
+    const double E_given = prm.get_double("Young's modulus");
+    const double nu_given = prm.get_double("Poisson's ratio");
+    prm.leave_subsection();
+
+    const std::string section = "Plate/Material";
+    const auto        named   = named_materials.find(name);
+    if (named != named_materials.end())
+      {
+        youngs_modulus = named->second.youngs_modulus;
+        poisson_ratio  = named->second.poisson_ratio;
+        return;
+      }
+    check_parameter(name == "custom", section, "Name", name,
+                    "unknown material; choose steel, bronze, lead, or custom "
+                    "with 'Young's modulus' and 'Poisson's ratio'");
+    check_parameter(E_given > 0, section, "Young's modulus", E_given,
+                    "must be > 0 (kg/mm^2)");
+    check_parameter(nu_given > -1 && nu_given < 0.5, section,
+                    "Poisson's ratio", nu_given,
+                    "must lie in (-1, 0.5) for an isotropic elastic plate");
+    youngs_modulus = E_given;
+    poisson_ratio  = nu_given;
+  }
+
+  void
+  Obstacle::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Obstacle");
+    prm.declare_entry(
+      "Function",
+      "psi3",
+      dealii::Patterns::Anything(),
+      "psi (mm), the lower bound w >= psi at every interior node: psi1 = -2, "
+      "psi2 = -0.1 - (x/50 - 1)^2 (y/100 - 0.5)^2, psi3 = -0.5 (x/50 - 1)^2 - "
+      "0.02 (x/50 - 1) - 0.5 / (1 + 30 (x/50 - 1)^2) (the paper's eq. 64, "
+      "for x, y in mm), none (no obstacle: a linear system), or any "
+      "expression in x and y (muparser syntax, constant pi).");
+    prm.leave_subsection();
+  }
+
+  void
+  Obstacle::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Obstacle");
+    name = prm.get("Function");
+    prm.leave_subsection();
+    const auto named = named_obstacles.find(name);
+    if (name == "none")
+      expression.clear();
+    else
+      {
+        expression = named != named_obstacles.end() ? named->second : name;
+        parse_function("Plate/Obstacle/Function", expression, obstacle_hint);
+      }
+  }
+
+  void
+  Load::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load");
+    prm.declare_entry(
+      "Force",
+      "f1",
+      dealii::Patterns::Anything(),
+      "f (kg/mm^2), the transverse force per area, positive upwards: f1 = -1, "
+      "f2 = -5, f3 = -10 (the paper's eq. 65), or any expression in x and y "
+      "(muparser syntax, constant pi). Integrated with 4 x 4 Gauss points "
+      "per cell, exactly for polynomials of degree <= 4 in each variable.");
+    prm.leave_subsection();
+  }
+
+  void
+  Load::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load");
+    name = prm.get("Force");
+    prm.leave_subsection();
+    const auto named = named_forces.find(name);
+    expression       = named != named_forces.end() ? named->second : name;
+    parse_function("Plate/Load/Force", expression, force_hint);
+  }
+
+  void
+  Output::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Subdivisions",
+                      "6",
+                      dealii::Patterns::Integer(),
+                      "Each cell is written as Subdivisions^2 patches of the "
+                      "exact bicubic field (plate.vtu); >= 1 and <= 32.");
+    prm.leave_subsection();
+  }
+
+  void
+  Output::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    const long n = prm.get_integer("Subdivisions");
+    prm.leave_subsection();
+    check_parameter(n >= 1 && n <= 32, "Plate/Output", "Subdivisions", n,
+                    "must be an integer between 1 and 32");
+    subdivisions = static_cast<unsigned int>(n);
+  }
+
+  void
+  Parameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Plate");
+    Geometry::declare_parameters(prm);
+    Material::declare_parameters(prm);
+    Obstacle::declare_parameters(prm);
+    Load::declare_parameters(prm);
+    Output::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+
+  void
+  Parameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Plate");
+    geometry.parse_parameters(prm);
+    material.parse_parameters(prm);
+    obstacle.parse_parameters(prm);
+    load.parse_parameters(prm);
+    output.parse_parameters(prm);
+    prm.leave_subsection();
+  }
+} // namespace unilateral::plate

@@ -1,0 +1,278 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/scenes/plate/bending.h>
+#include <unilateral/scenes/plate/plate_scene.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+namespace unilateral::plate
+{
+  void
+  PlateScene::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    Parameters::declare_parameters(prm);
+  }
+
+  PlateScene::PlateScene(dealii::ParameterHandler &prm)
+    : fe(dealii::FE_Q<2>(1), fe::BognerFoxSchmit::dofs_per_vertex)
+  {
+    parameters.parse_parameters(prm);
+    rigidity = flexural_rigidity(parameters.material.youngs_modulus,
+                                 parameters.material.poisson_ratio,
+                                 parameters.geometry.thickness);
+    // The expressions were checked while parsing; these cannot fail.
+    if (parameters.obstacle.present())
+      obstacle = parse_function("Plate/Obstacle/Function",
+                                parameters.obstacle.expression,
+                                "");
+    force = parse_function("Plate/Load/Force", parameters.load.expression, "");
+  }
+
+  // The plate [0, L1] x [0, L2] as n1 x n2 equal rectangles.
+  void
+  PlateScene::make_grid()
+  {
+    const Geometry &geometry = parameters.geometry;
+    dealii::GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      {geometry.n_x, geometry.n_y},
+      dealii::Point<2>(0, 0),
+      dealii::Point<2>(geometry.length_x, geometry.length_y));
+  }
+
+  /**
+   * Number the DOFs, eliminate the clamped ones and find J1, the w DOFs of
+   * the interior nodes, with the obstacle's value at each of them.
+   */
+  void
+  PlateScene::setup_system()
+  {
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe);
+
+    const dealii::ComponentMask clamped(
+      {true, true, true, parameters.geometry.clamp_twist});
+    const dealii::IndexSet fixed =
+      dealii::DoFTools::extract_boundary_dofs(dof_handler, clamped);
+    free_dofs = number_free_dofs(dof_handler.n_dofs(), fixed);
+
+    // The w DOF of every node that is not clamped, with its vertex.
+    const std::vector<unsigned int> bfs_index =
+      fe::bfs_local_indices(dof_handler.get_fe());
+    std::vector<dealii::types::global_dof_index> local_dofs(
+      fe.n_dofs_per_cell());
+    std::vector<std::pair<lcp::Index, unsigned int>> interior_nodes;
+    std::vector<bool> seen(triangulation.n_vertices(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(local_dofs);
+        for (unsigned int i = 0; i < local_dofs.size(); ++i)
+          {
+            const unsigned int vertex = bfs_index[i] / 4;
+            const unsigned int component = bfs_index[i] % 4;
+            const lcp::Index   free = free_dofs.index[local_dofs[i]];
+            if (component != fe::BognerFoxSchmit::deflection || free < 0 ||
+                seen[cell->vertex_index(vertex)])
+              continue;
+            seen[cell->vertex_index(vertex)] = true;
+            interior_nodes.emplace_back(free, cell->vertex_index(vertex));
+          }
+      }
+    std::sort(interior_nodes.begin(), interior_nodes.end());
+
+    problem.constrained.clear();
+    bound_vertex.clear();
+    if (obstacle == nullptr)
+      {
+        problem.lower_bound.resize(0);
+        return;
+      }
+    const std::vector<dealii::Point<2>> &vertices =
+      triangulation.get_vertices();
+    problem.lower_bound.resize(interior_nodes.size());
+    for (const auto &[free, vertex] : interior_nodes)
+      {
+        const double psi = obstacle->value(vertices[vertex]);
+        if (!std::isfinite(psi))
+          {
+            std::ostringstream message;
+            message << "parameter 'Plate/Obstacle/Function' = "
+                    << parameters.obstacle.name << ": evaluates to " << psi
+                    << " at the node (" << vertices[vertex]
+                    << "); give an obstacle that is finite at every node";
+            throw InputError(message.str());
+          }
+        problem.lower_bound[problem.constrained.size()] = psi;
+        problem.constrained.push_back(free);
+        bound_vertex.push_back(vertex);
+      }
+  }
+
+  // A = C_JJ and b = F_J; the clamped DOFs are zero, so F needs no lifting.
+  void
+  PlateScene::assemble_system()
+  {
+    assemble_plate_system(dof_handler,
+                          free_dofs,
+                          nullptr,
+                          rigidity,
+                          parameters.material.poisson_ratio,
+                          *force,
+                          "Plate/Load/Force",
+                          problem.A,
+                          problem.b);
+    lcp::check_and_normalise(problem);
+  }
+
+  lcp::Report
+  PlateScene::solve(RunContext &context)
+  {
+    return unilateral::solve(context, *this, problem, solution);
+  }
+
+  // The full DOF vector, cn, the smallest nodal deflection, and w at the
+  // centre of the plate (evaluated on the cell that contains it).
+  void
+  PlateScene::compute_results(const lcp::Report &report)
+  {
+    dof_values.reinit(dof_handler.n_dofs());
+    for (lcp::Index k = 0; k < free_dofs.size(); ++k)
+      dof_values[free_dofs.dof[k]] = solution.u[k];
+
+    results_.n_elements = triangulation.n_active_cells();
+    results_.n_free     = static_cast<unsigned int>(problem.size());
+    results_.n_bounds   = static_cast<unsigned int>(problem.n_constrained());
+    results_.n_contact  = report.n_active;
+    results_.rigidity   = rigidity;
+
+    const std::vector<unsigned int> bfs_index =
+      fe::bfs_local_indices(dof_handler.get_fe());
+    const dealii::Point<2> centre(parameters.geometry.length_x / 2,
+                                  parameters.geometry.length_y / 2);
+    results_.min_deflection = std::numeric_limits<double>::infinity();
+    bool centre_found       = false;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const auto coefficients =
+          cell_coefficients(cell, bfs_index, dof_values);
+        for (unsigned int v = 0; v < 4; ++v)
+          results_.min_deflection = std::min(
+            results_.min_deflection,
+            coefficients[fe::BognerFoxSchmit::local_index(v, 0)]);
+        const fe::BognerFoxSchmit element = cell_element(cell);
+        const dealii::Point<2>    upper   = element.vertex(3);
+        if (!centre_found && element.vertex(0)[0] <= centre[0] &&
+            centre[0] <= upper[0] && element.vertex(0)[1] <= centre[1] &&
+            centre[1] <= upper[1])
+          {
+            results_.centre_deflection = element.value(coefficients, centre);
+            centre_found               = true;
+          }
+      }
+  }
+
+  void
+  PlateScene::print_summary(std::ostream &out, const lcp::Report &report) const
+  {
+    const Geometry &geometry = parameters.geometry;
+    const Material &material = parameters.material;
+    const auto      flags    = out.flags();
+    const auto      precision = out.precision();
+    out << "  plate " << geometry.length_x << " x " << geometry.length_y
+        << " mm, t = " << geometry.thickness << " mm, " << geometry.n_x
+        << " x " << geometry.n_y << " Bogner-Fox-Schmit elements, "
+        << (geometry.clamp_twist ? "fully clamped" : "clamped (w_xy free)")
+        << "\n"
+        << "  material " << material.name << ": E = "
+        << material.youngs_modulus << " kg/mm^2, nu = "
+        << material.poisson_ratio << ", D = " << std::setprecision(6)
+        << rigidity << " kg mm\n"
+        << "  obstacle " << parameters.obstacle.name << ", force "
+        << parameters.load.name << "\n"
+        << "  |J| = " << results_.n_free << " free DOFs, |J1| = "
+        << results_.n_bounds << " bounded nodes\n";
+    print_solver_summary(out, problem, report);
+    out << "  contact nodes cn = " << results_.n_contact << "\n"
+        << std::scientific << std::setprecision(6)
+        << "  min nodal deflection " << results_.min_deflection
+        << " mm, centre deflection " << results_.centre_deflection << " mm"
+        << std::endl;
+    out.flags(flags);
+    out.precision(precision);
+  }
+
+  void
+  PlateScene::write_summary(const RunContext  &context,
+                            const lcp::Report &report) const
+  {
+    JsonObject summary = summary_base(context, "plate", problem, report);
+    summary.set("n_elements", results_.n_elements)
+      .set("n_free", results_.n_free)
+      .set("n_bounds", results_.n_bounds)
+      .set("n_contact", results_.n_contact)
+      .set("min_deflection", results_.min_deflection)
+      .set("centre_deflection", results_.centre_deflection)
+      .set("n1", parameters.geometry.n_x)
+      .set("n2", parameters.geometry.n_y)
+      .set("length_x", parameters.geometry.length_x)
+      .set("length_y", parameters.geometry.length_y)
+      .set("thickness", parameters.geometry.thickness)
+      .set("boundary_condition",
+           parameters.geometry.clamp_twist ? "fully clamped" : "clamped")
+      .set("material", parameters.material.name)
+      .set("youngs_modulus", parameters.material.youngs_modulus)
+      .set("poisson_ratio", parameters.material.poisson_ratio)
+      .set("flexural_rigidity", rigidity)
+      .set("obstacle", parameters.obstacle.name)
+      .set("obstacle_expression", parameters.obstacle.expression)
+      .set("force", parameters.load.name)
+      .set("force_expression", parameters.load.expression);
+    unilateral::write_summary(context, summary);
+  }
+
+  lcp::Report
+  PlateScene::run(RunContext &context)
+  {
+    {
+      dealii::TimerOutput::Scope scope(*context.timer, "make grid");
+      make_grid();
+    }
+    {
+      dealii::TimerOutput::Scope scope(*context.timer, "setup system");
+      setup_system();
+    }
+    {
+      dealii::TimerOutput::Scope scope(*context.timer, "assemble system");
+      assemble_system();
+    }
+    export_lcp_if_requested(context, problem);
+
+    const lcp::Report report = solve(context);
+    compute_results(report);
+    if (context.write_vtu)
+      {
+        dealii::TimerOutput::Scope scope(*context.timer, "output results");
+        output_results(context);
+      }
+    print_summary(*context.out, report);
+    write_summary(context, report);
+    return report;
+  }
+
+  UNILATERAL_REGISTER_SCENE(
+    PlateScene,
+    "plate",
+    "a clamped Kirchhoff plate on an obstacle, Bogner-Fox-Schmit elements "
+    "(Fernandes, Figueiredo & Judice 2002)")
+} // namespace unilateral::plate
