@@ -41,9 +41,10 @@ namespace unilateral::plate
    * M = -D (kappa + nu tr(kappa) I) restricted to Kirchhoff kinematics:
    *   M_xx = -D (w_xx + nu w_yy), M_yy = -D (w_yy + nu w_xx),
    *   M_xy = -D (1 - nu) w_xy.
-   * (moment per unit length, kg mm / mm). With w positive upwards, a plate
-   * curving upwards (w_xx > 0, as near a clamped edge under a downward load)
-   * has M_xx < 0.
+   * (moment per unit length, kg mm / mm), w positive upwards. Under a
+   * downward load the plate leaves a clamped edge curving downwards
+   * (w_xx < 0), so M_xx > 0 there, and sags in the middle (w_xx > 0,
+   * M_xx < 0).
    */
   inline std::array<double, 3>
   bending_moments(const dealii::Tensor<2, 2> &hessian,
