@@ -116,7 +116,7 @@ namespace unilateral::plate
                         const double                       rigidity,
                         const double                       poisson_ratio,
                         const dealii::Function<2, double> &force,
-                        const std::string                 &force_parameter,
+                        const std::string                 &force_description,
                         lcp::SparseMatrix                 &matrix,
                         lcp::Vector                       &rhs)
   {
@@ -135,8 +135,9 @@ namespace unilateral::plate
       if (!std::isfinite(f))
         {
           std::ostringstream message;
-          message << "parameter '" << force_parameter
-                  << "': the force evaluates to " << f << " at (" << p
+          message << force_description << ": evaluates to "
+                  << (std::isnan(f) ? "nan" : f > 0 ? "inf" : "-inf")
+                  << " at (" << p[0] << ", " << p[1]
                   << "); give a force that is finite on the whole plate";
           throw InputError(message.str());
         }

@@ -108,8 +108,10 @@ namespace unilateral::plate
           {
             std::ostringstream message;
             message << "parameter 'Plate/Obstacle/Function' = "
-                    << parameters.obstacle.name << ": evaluates to " << psi
-                    << " at the node (" << vertices[vertex]
+                    << parameters.obstacle.name << ": evaluates to "
+                    << (std::isnan(psi) ? "nan" : psi > 0 ? "inf" : "-inf")
+                    << " at the node (" << vertices[vertex][0] << ", "
+                    << vertices[vertex][1]
                     << "); give an obstacle that is finite at every node";
             throw InputError(message.str());
           }
@@ -129,7 +131,8 @@ namespace unilateral::plate
                           rigidity,
                           parameters.material.poisson_ratio,
                           *force,
-                          "Plate/Load/Force",
+                          "parameter 'Plate/Load/Force' = " +
+                            parameters.load.name,
                           problem.A,
                           problem.b);
     lcp::check_and_normalise(problem);

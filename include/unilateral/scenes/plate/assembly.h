@@ -57,7 +57,8 @@ namespace unilateral::plate
    * DOFs (nullptr: z_L = 0, the clamped plate). C and F are integrated
    * exactly (CellIntegrals): C^e from D [nu Delta z Delta w + (1 - nu)
    * z_,ab w_,ab], F^e from f w. @p force is evaluated at Gauss points; a
-   * non-finite value throws InputError naming @p force_parameter.
+   * non-finite value throws InputError starting with @p force_description
+   * (say "parameter 'Plate/Load/Force' = 1/x").
    */
   void
   assemble_plate_system(const dealii::DoFHandler<2>       &dof_handler,
@@ -66,7 +67,7 @@ namespace unilateral::plate
                         double                             rigidity,
                         double                             poisson_ratio,
                         const dealii::Function<2, double> &force,
-                        const std::string                 &force_parameter,
+                        const std::string                 &force_description,
                         lcp::SparseMatrix                 &matrix,
                         lcp::Vector                       &rhs);
 } // namespace unilateral::plate

@@ -1,0 +1,135 @@
+// Bad input to the plate scene through the whole application: every case
+// must end with exit code 1 and exactly one line on the error stream that
+// names the parameter and the value (and says what would be valid). Nothing
+// else may reach the terminal (muparser's own complaints included: this
+// test's stderr is compared too).
+
+#include <unilateral/application.h>
+
+#include "../test_tools.h"
+
+#include <fstream>
+#include <sstream>
+
+using test_tools::verdict;
+
+namespace
+{
+  struct Case
+  {
+    std::string name;
+    std::string plate;     // body of subsection Plate
+    std::string parameter; // what the message must name
+    std::string value;     // and the value it must quote
+  };
+
+  bool
+  run_case(const Case &c)
+  {
+    const std::string prm = "bad_" + c.name + ".prm";
+    std::ofstream(prm) << "set Scene = plate\n"
+                       << "subsection Output\n  set Directory = results\n"
+                       << "  set Print timings = false\n"
+                       << "  set Write VTU = false\nend\n"
+                       << "subsection Plate\n"
+                       << c.plate << "end\n";
+    std::ostringstream out, err;
+    std::string        program = "unilateral", file = prm;
+    char              *argv[]  = {program.data(), file.data()};
+    const int          code    = unilateral::run_application(2, argv, out, err);
+    const std::string  message = err.str();
+    std::cout << c.name << ": exit code " << code << ", " << message;
+    const bool one_line =
+      !message.empty() && message.find('\n') == message.size() - 1;
+    return code == 1 && one_line &&
+           message.find(c.parameter) != std::string::npos &&
+           message.find(c.value) != std::string::npos;
+  }
+} // namespace
+
+int
+main()
+{
+  const std::vector<Case> cases = {
+    {"thickness_zero",
+     "subsection Geometry\n  set Thickness = 0\nend\n",
+     "Plate/Geometry/Thickness",
+     "= 0"},
+    {"thickness_negative",
+     "subsection Geometry\n  set Thickness = -2\nend\n",
+     "Plate/Geometry/Thickness",
+     "= -2"},
+    {"length_negative",
+     "subsection Geometry\n  set Length x = -100\nend\n",
+     "Plate/Geometry/Length x",
+     "= -100"},
+    {"no_elements",
+     "subsection Geometry\n  set Elements x = 0\nend\n",
+     "Plate/Geometry/Elements x",
+     "= 0"},
+    {"poisson_half",
+     "subsection Material\n  set Name = custom\n"
+     "  set Poisson's ratio = 0.5\nend\n",
+     "Plate/Material/Poisson's ratio",
+     "= 0.5"},
+    {"poisson_below_minus_one",
+     "subsection Material\n  set Name = custom\n"
+     "  set Poisson's ratio = -1.2\nend\n",
+     "Plate/Material/Poisson's ratio",
+     "= -1.2"},
+    {"youngs_modulus_zero",
+     "subsection Material\n  set Name = custom\n"
+     "  set Young's modulus = 0\nend\n",
+     "Plate/Material/Young's modulus",
+     "= 0"},
+    {"youngs_modulus_negative",
+     "subsection Material\n  set Name = custom\n"
+     "  set Young's modulus = -21000\nend\n",
+     "Plate/Material/Young's modulus",
+     "= -21000"},
+    {"unknown_material",
+     "subsection Material\n  set Name = copper\nend\n",
+     "Plate/Material/Name",
+     "= copper"},
+    {"obstacle_parse_error",
+     "subsection Obstacle\n  set Function = -0.5 - 0.001*(x\nend\n",
+     "Plate/Obstacle/Function",
+     "= -0.5 - 0.001*(x"},
+    {"obstacle_unknown_variable",
+     "subsection Obstacle\n  set Function = -0.5 + z\nend\n",
+     "Plate/Obstacle/Function",
+     "= -0.5 + z"},
+    {"obstacle_infinite_at_a_node",
+     "subsection Geometry\n  set Elements x = 4\n  set Elements y = 4\nend\n"
+     "subsection Obstacle\n  set Function = 1/(x - 50)\nend\n",
+     "Plate/Obstacle/Function",
+     "= 1/(x - 50)"},
+    {"force_parse_error",
+     "subsection Load\n  set Force = -1 *\nend\n",
+     "Plate/Load/Force",
+     "= -1 *"},
+    {"force_unknown_function",
+     "subsection Load\n  set Force = foo(x)\nend\n",
+     "Plate/Load/Force",
+     "= foo(x)"},
+    {"force_empty",
+     "subsection Load\n  set Force =\nend\n",
+     "Plate/Load/Force",
+     "is empty"},
+    {"force_not_a_number",
+     "subsection Geometry\n  set Elements x = 4\n  set Elements y = 4\nend\n"
+     "subsection Load\n  set Force = sqrt(-1 - x)\nend\n",
+     "Plate/Load/Force",
+     "= sqrt(-1 - x): evaluates to nan"},
+    {"subdivisions_zero",
+     "subsection Output\n  set Subdivisions = 0\nend\n",
+     "Plate/Output/Subdivisions",
+     "= 0"}};
+
+  bool all = true;
+  for (const Case &c : cases)
+    all = run_case(c) && all;
+  verdict("every case: exit code 1 and one line naming the parameter and the "
+          "value",
+          all);
+}
