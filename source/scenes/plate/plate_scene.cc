@@ -192,6 +192,8 @@ namespace unilateral::plate
     const Material &material = parameters.material;
     const auto      flags    = out.flags();
     const auto      precision = out.precision();
+    // The solver's progress lines share this stream and its format state.
+    out << std::defaultfloat << std::setprecision(6);
     out << "  plate " << geometry.length_x << " x " << geometry.length_y
         << " mm, t = " << geometry.thickness << " mm, " << geometry.n_x
         << " x " << geometry.n_y << " Bogner-Fox-Schmit elements, "
@@ -199,8 +201,7 @@ namespace unilateral::plate
         << "\n"
         << "  material " << material.name << ": E = "
         << material.youngs_modulus << " kg/mm^2, nu = "
-        << material.poisson_ratio << ", D = " << std::setprecision(6)
-        << rigidity << " kg mm\n"
+        << material.poisson_ratio << ", D = " << rigidity << " kg mm\n"
         << "  obstacle " << parameters.obstacle.name << ", force "
         << parameters.load.name << "\n"
         << "  |J| = " << results_.n_free << " free DOFs, |J1| = "
