@@ -52,18 +52,21 @@ namespace plate_runs
   }
 
   /// Run the scene with @p plate_parameters and solver @p method (its
-  /// registered name; an unknown name fails the test loudly).
+  /// registered name; an unknown name fails the test loudly), with more
+  /// "set ..." lines for subsection Solver in @p solver_settings.
   inline Run
   run_plate(const std::string &name,
             const std::string &plate_parameters,
             const std::string &method,
-            const bool         write_vtu = false)
+            const bool         write_vtu       = false,
+            const std::string &solver_settings = "")
   {
     dealii::ParameterHandler prm;
     unilateral::lcp::SolverParameters::declare_parameters(prm);
     unilateral::plate::PlateScene::declare_parameters(prm);
     prm.parse_input_from_string("subsection Solver\n  set Method = " + method +
-                                "\nend\nsubsection Plate\n" +
+                                "\n" + solver_settings +
+                                "end\nsubsection Plate\n" +
                                 plate_parameters + "end\n");
 
     unilateral::RunContext context;
