@@ -148,6 +148,15 @@ def main(run_directory):
     verdict("deflection in plate.vtu equals nodes.vtu at every node",
             numpy.all(numpy.abs(fields["deflection"][on_node] -
                                 nodes["deflection"][matched]) <= 1e-6 * scale))
+    slope_scale = max(numpy.abs(nodes["slope_x"]).max(),
+                      numpy.abs(nodes["slope_y"]).max(), 1e-300)
+    verdict("slope in plate.vtu equals (slope_x, slope_y) of nodes.vtu at "
+            "every node (the FE_Q(3) field has the BFS nodal derivatives)",
+            numpy.all(numpy.abs(fields["slope"][on_node, 0] -
+                                nodes["slope_x"][matched]) <= 1e-5 * slope_scale)
+            and numpy.all(numpy.abs(fields["slope"][on_node, 1] -
+                                    nodes["slope_y"][matched])
+                          <= 1e-5 * slope_scale))
     verdict("bending_moment_xy in plate.vtu equals -D (1 - nu) twist of "
             "nodes.vtu at every node",
             numpy.all(numpy.abs(fields["bending_moment_xy"][on_node] +
