@@ -153,25 +153,25 @@ namespace unilateral::plate
     for (lcp::Index k = 0; k < free_dofs.size(); ++k)
       dof_values[free_dofs.dof[k]] = solution.u[k];
 
-    results_.n_elements = triangulation.n_active_cells();
-    results_.n_free     = static_cast<unsigned int>(problem.size());
-    results_.n_bounds   = static_cast<unsigned int>(problem.n_constrained());
-    results_.n_contact  = report.n_active;
-    results_.rigidity   = rigidity;
+    plate_results.n_elements = triangulation.n_active_cells();
+    plate_results.n_free     = static_cast<unsigned int>(problem.size());
+    plate_results.n_bounds   = static_cast<unsigned int>(problem.n_constrained());
+    plate_results.n_contact  = report.n_active;
+    plate_results.rigidity   = rigidity;
 
     const std::vector<unsigned int> bfs_index =
       fe::bfs_local_indices(dof_handler.get_fe());
     const dealii::Point<2> centre(parameters.geometry.length_x / 2,
                                   parameters.geometry.length_y / 2);
-    results_.min_deflection = std::numeric_limits<double>::infinity();
+    plate_results.min_deflection = std::numeric_limits<double>::infinity();
     bool centre_found       = false;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const auto coefficients =
           cell_coefficients(cell, bfs_index, dof_values);
         for (unsigned int v = 0; v < 4; ++v)
-          results_.min_deflection = std::min(
-            results_.min_deflection,
+          plate_results.min_deflection = std::min(
+            plate_results.min_deflection,
             coefficients[fe::BognerFoxSchmit::local_index(v, 0)]);
         const fe::BognerFoxSchmit element = cell_element(cell);
         const dealii::Point<2>    upper   = element.vertex(3);
@@ -179,7 +179,7 @@ namespace unilateral::plate
             centre[0] <= upper[0] && element.vertex(0)[1] <= centre[1] &&
             centre[1] <= upper[1])
           {
-            results_.centre_deflection = element.value(coefficients, centre);
+            plate_results.centre_deflection = element.value(coefficients, centre);
             centre_found               = true;
           }
       }
@@ -204,13 +204,13 @@ namespace unilateral::plate
         << material.poisson_ratio << ", D = " << rigidity << " kg mm\n"
         << "  obstacle " << parameters.obstacle.name << ", force "
         << parameters.load.name << "\n"
-        << "  |J| = " << results_.n_free << " free DOFs, |J1| = "
-        << results_.n_bounds << " bounded nodes\n";
+        << "  |J| = " << plate_results.n_free << " free DOFs, |J1| = "
+        << plate_results.n_bounds << " bounded nodes\n";
     print_solver_summary(out, problem, report);
-    out << "  contact nodes cn = " << results_.n_contact << "\n"
+    out << "  contact nodes cn = " << plate_results.n_contact << "\n"
         << std::scientific << std::setprecision(6)
-        << "  min nodal deflection " << results_.min_deflection
-        << " mm, centre deflection " << results_.centre_deflection << " mm"
+        << "  min nodal deflection " << plate_results.min_deflection
+        << " mm, centre deflection " << plate_results.centre_deflection << " mm"
         << std::endl;
     out.flags(flags);
     out.precision(precision);
@@ -221,12 +221,12 @@ namespace unilateral::plate
                             const lcp::Report &report) const
   {
     JsonObject summary = summary_base(context, "plate", problem, report);
-    summary.set("n_elements", results_.n_elements)
-      .set("n_free", results_.n_free)
-      .set("n_bounds", results_.n_bounds)
-      .set("n_contact", results_.n_contact)
-      .set("min_deflection", results_.min_deflection)
-      .set("centre_deflection", results_.centre_deflection)
+    summary.set("n_elements", plate_results.n_elements)
+      .set("n_free", plate_results.n_free)
+      .set("n_bounds", plate_results.n_bounds)
+      .set("n_contact", plate_results.n_contact)
+      .set("min_deflection", plate_results.min_deflection)
+      .set("centre_deflection", plate_results.centre_deflection)
       .set("n1", parameters.geometry.n_x)
       .set("n2", parameters.geometry.n_y)
       .set("length_x", parameters.geometry.length_x)

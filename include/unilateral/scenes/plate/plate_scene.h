@@ -82,7 +82,7 @@ namespace unilateral::plate
     const Results &
     results() const
     {
-      return results_;
+      return plate_results;
     }
 
     /// All BFS DOFs of the solution (deal.II numbering, fixed ones zero).
@@ -141,6 +141,6 @@ namespace unilateral::plate
     lcp::Solution solution;
 
     dealii::Vector<double> dof_values;
-    Results                results_;
+    Results                plate_results;
   };
 } // namespace unilateral::plate
