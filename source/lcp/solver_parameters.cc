@@ -92,11 +92,15 @@ namespace unilateral::lcp
 
       prm.enter_subsection("PDPC");
       prm.declare_entry("Initial point",
-                        "1e-4",
+                        "1e-2",
                         Double(0),
                         "u0 = eps e, Sigma0 = -eps e (slacks and multipliers of "
                         "the scaled problem); Ainsworth & Mihai take eps in "
-                        "(1e-6, 1e-2).");
+                        "(1e-6, 1e-2). The upper end is the default: a smaller "
+                        "eps starts almost on the complementarity surface but "
+                        "far from feasibility, and every step is then cut "
+                        "short by a bound (on a 16129-unknown obstacle problem "
+                        "1e-6 takes 185 iterations, 1e-2 takes 29).");
       prm.declare_entry("Complementarity tolerance",
                         "0",
                         Double(0),

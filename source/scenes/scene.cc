@@ -106,7 +106,8 @@ namespace unilateral
     JsonObject &counters = summary.object("counters");
     counters.set("symbolic_analyses", report.counters.symbolic_analyses)
       .set("numeric_factorisations", report.counters.numeric_factorisations)
-      .set("factorisation_updates", report.counters.factorisation_updates)
+      .set("reused_factorisations", report.counters.reused_factorisations)
+      .set("cg_iterations", report.counters.cg_iterations)
       .set("triangular_solves", report.counters.triangular_solves)
       .set("matrix_vector_products", report.counters.matrix_vector_products);
     return summary;

@@ -49,7 +49,7 @@ namespace unilateral::lcp
 
     struct
     {
-      double initial_point   = 1e-4; ///< u0 = eps e, Sigma0 = -eps e
+      double initial_point   = 1e-2; ///< u0 = eps e, Sigma0 = -eps e
       double tolerance_gap   = 0;    ///< tol1; 0: n_c * machine epsilon
       double tolerance_residual = 0; ///< tol2; 0: n * sqrt(machine epsilon)
       bool   diagonal_scaling = true;

@@ -41,7 +41,9 @@ namespace unilateral::lcp
                 std::max(0.0, problem.lower_bound[k]);
           }
 
-        ActiveSetSystem   system(problem.A, report.counters);
+        // A factor from a previous stage (the regularised solve before the
+        // projection) preconditions the first systems.
+        ActiveSetSystem   system(problem.A, report.counters, solution.factor);
         std::vector<char> active(n, 0);
         const unsigned int limit = iteration_limit(500);
         for (unsigned int iteration = 0;; ++iteration)
@@ -88,6 +90,7 @@ namespace unilateral::lcp
                 break;
               }
             report.iterations = iteration + 1;
+            solution.factor = system.factor();
             if (progress != nullptr)
               *progress << "    pdas iteration " << iteration + 1
                         << ": active set " << n_active << ", changed "
