@@ -44,7 +44,9 @@ namespace unilateral::lcp
         Bool(),
         "After solving the regularised problem, run PDAS on the original A "
         "from u_eps (Ainsworth & Mihai, Section 4): it recovers the exact "
-        "solution, usually in one iteration.");
+        "solution, usually in one iteration. The same step follows the "
+        "approximate methods (psor, pdpc, interior_point), as Ainsworth & "
+        "Mihai suggest for PDPC; switch it off to see a method's own answer.");
       prm.declare_entry(
         "Maximum iterations",
         "0",
