@@ -22,7 +22,7 @@ namespace unilateral::lcp
     std::shared_ptr<const ActiveSetFactor> inherited)
     : A(A)
     , counters(counters)
-    , own(std::make_shared<ActiveSetFactor>(counters))
+    , own(std::make_shared<ActiveSetFactor>())
     , inherited(std::move(inherited))
   {
     const Vector diagonal = A.diagonal();
@@ -66,9 +66,18 @@ namespace unilateral::lcp
           }
       }
     own->fixed = fixed;
-    own_valid  = own->cholesky.factorise(reduced);
+    own_valid  = own->cholesky.factorise(reduced, counters);
     inherited.reset(); // our own factor is closer from now on
     return own_valid;
+  }
+
+  void
+  ActiveSetSystem::solve_with(const ActiveSetFactor &factor,
+                              const DenseMatrix     &B,
+                              DenseMatrix           &X) const
+  {
+    factor.cholesky.solve(B, X);
+    counters.triangular_solves += static_cast<unsigned int>(B.cols());
   }
 
   void
@@ -95,7 +104,7 @@ namespace unilateral::lcp
   {
     // Start from the preconditioner's answer; then CG on the residual. The
     // tolerance is what a backward-stable direct solve achieves.
-    preconditioner.cholesky.solve(B, X);
+    solve_with(preconditioner, B, X);
     DenseMatrix KX;
     apply(fixed, X, KX);
     counters.matrix_vector_products += static_cast<unsigned int>(B.cols());
@@ -108,8 +117,9 @@ namespace unilateral::lcp
         Vector       x = X.col(column);
         if (r.norm() <= target)
           continue;
-        Vector z, p, q;
-        preconditioner.cholesky.solve(r, z);
+        DenseMatrix z_matrix;
+        solve_with(preconditioner, r, z_matrix);
+        Vector z = z_matrix.col(0), p;
         p               = z;
         double rz       = r.dot(z);
         bool   converged = false;
@@ -131,7 +141,8 @@ namespace unilateral::lcp
                 converged = true;
                 break;
               }
-            preconditioner.cholesky.solve(r, z);
+            solve_with(preconditioner, r, z_matrix);
+            z                    = z_matrix.col(0);
             const double rz_next = r.dot(z);
             p                    = z + (rz_next / rz) * p;
             rz                   = rz_next;
@@ -178,7 +189,7 @@ namespace unilateral::lcp
     bool        solved = false;
     if (own_valid && own->fixed == fixed)
       {
-        own->cholesky.solve(rhs, solution);
+        solve_with(*own, rhs, solution);
         solved = true;
       }
     else
@@ -203,7 +214,7 @@ namespace unilateral::lcp
       {
         if (!factorise(fixed))
           return false;
-        own->cholesky.solve(rhs, solution);
+        solve_with(*own, rhs, solution);
       }
     for (Index i = 0; i < n; ++i)
       if (!fixed[i])

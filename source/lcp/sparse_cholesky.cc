@@ -73,15 +73,14 @@ namespace unilateral::lcp
     }
   };
 
-  SparseCholesky::SparseCholesky(Counters &counters)
+  SparseCholesky::SparseCholesky()
     : implementation(std::make_unique<Implementation>())
-    , counters(counters)
   {}
 
   SparseCholesky::~SparseCholesky() = default;
 
   bool
-  SparseCholesky::factorise(const SparseMatrix &A)
+  SparseCholesky::factorise(const SparseMatrix &A, Counters &counters)
   {
     if (!A.isCompressed())
       throw std::logic_error("SparseCholesky needs a compressed matrix");
@@ -173,6 +172,5 @@ namespace unilateral::lcp
                                 B.rows(),
                                 B.cols());
     cholmod_free_dense(&solution, &impl.common);
-    counters.triangular_solves += static_cast<unsigned int>(B.cols());
   }
 } // namespace unilateral::lcp

@@ -88,6 +88,7 @@ namespace unilateral
       .set("n_active", report.n_active)
       .set("iterations", report.iterations)
       .set("projection_iterations", report.projection_iterations)
+      .set("continuation_stages", report.continuation_stages)
       .set("regularisation", report.regularisation)
       .set("converged", report.converged())
       .set("status", lcp::to_string(report.status))

@@ -15,10 +15,6 @@ namespace unilateral::lcp
    */
   struct ActiveSetFactor
   {
-    explicit ActiveSetFactor(Counters &counters)
-      : cholesky(counters)
-    {}
-
     SparseCholesky    cholesky;
     std::vector<char> fixed;
   };
@@ -81,6 +77,12 @@ namespace unilateral::lcp
 
     /// Preconditioned CG on K(X) X = B with @p preconditioner; true if
     /// every column reached the tolerance within @p max_iterations.
+    /// Solve with @p factor, counting the triangular solves.
+    void
+    solve_with(const ActiveSetFactor &factor,
+               const DenseMatrix     &B,
+               DenseMatrix           &X) const;
+
     bool
     preconditioned_cg(const std::vector<char> &fixed,
                       const ActiveSetFactor   &preconditioner,

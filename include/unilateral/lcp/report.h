@@ -46,6 +46,8 @@ namespace unilateral::lcp
     unsigned int iterations = 0;
     /// Iterations of the projection step (PDAS on A from u_eps), if it ran.
     unsigned int projection_iterations = 0;
+    /// eps-continuation stages the projection needed (0 normally).
+    unsigned int continuation_stages = 0;
     bool         projected             = false;
     /// Regularisation actually added to the diagonal (absolute), 0 if none.
     double       regularisation = 0;

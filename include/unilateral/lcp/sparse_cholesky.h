@@ -15,12 +15,13 @@ namespace unilateral::lcp
    * every numeric factorisation of a matrix with the same pattern reuses it.
    *
    * Matrices are given with both triangles stored; CHOLMOD reads the upper
-   * one. Work is counted in the Counters passed at construction.
+   * one. factorise() counts its work in the Counters it is given; solves are
+   * counted by the caller (a factor may be shared with a later solve).
    */
   class SparseCholesky
   {
   public:
-    explicit SparseCholesky(Counters &counters);
+    SparseCholesky();
     ~SparseCholesky();
     SparseCholesky(const SparseCholesky &) = delete;
     SparseCholesky &
@@ -32,7 +33,7 @@ namespace unilateral::lcp
      * keeps no factor) if A is not numerically positive definite.
      */
     bool
-    factorise(const SparseMatrix &A);
+    factorise(const SparseMatrix &A, Counters &counters);
 
     /// Solve A x = b with the current factor.
     void
@@ -52,6 +53,5 @@ namespace unilateral::lcp
   private:
     struct Implementation;
     std::unique_ptr<Implementation> implementation;
-    Counters                       &counters;
   };
 } // namespace unilateral::lcp
