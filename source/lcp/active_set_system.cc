@@ -45,29 +45,94 @@ namespace unilateral::lcp
     return inherited;
   }
 
+  void
+  ActiveSetFactor::solve(const DenseMatrix &B, DenseMatrix &X) const
+  {
+    if (reduced_index.empty())
+      {
+        cholesky.solve(B, X);
+        return;
+      }
+    const Index n = static_cast<Index>(fixed.size());
+    DenseMatrix B_free(n_free, B.cols()), X_free;
+    for (Index i = 0; i < n; ++i)
+      if (reduced_index[i] >= 0)
+        B_free.row(reduced_index[i]) = B.row(i);
+    cholesky.solve(B_free, X_free);
+    X.resize(n, B.cols());
+    for (Index i = 0; i < n; ++i)
+      if (reduced_index[i] >= 0)
+        X.row(i) = X_free.row(reduced_index[i]);
+      else
+        X.row(i) = B.row(i) / fixed_diagonal[i];
+  }
+
   bool
   ActiveSetSystem::factorise(const std::vector<char> &fixed)
   {
-    if (reduced.rows() != A.rows())
-      reduced = A;
-    // Same pattern as A: zero the coupling of fixed indices, keep a scaled
-    // identity on their diagonal so the conditioning is that of A.
-    for (Index j = 0; j < A.outerSize(); ++j)
-      {
-        const Index begin = A.outerIndexPtr()[j];
-        const Index end   = A.outerIndexPtr()[j + 1];
-        for (Index k = begin; k < end; ++k)
-          {
-            const Index i = A.innerIndexPtr()[k];
-            if (fixed[i] || fixed[j])
-              reduced.valuePtr()[k] = (i == j) ? fixed_diagonal[i] : 0.0;
-            else
-              reduced.valuePtr()[k] = A.valuePtr()[k];
-          }
-      }
-    own->fixed = fixed;
-    own_valid  = own->cholesky.factorise(reduced, counters);
+    const Index n       = A.rows();
+    Index       n_fixed = 0;
+    for (const char f : fixed)
+      n_fixed += f;
+
+    own->fixed          = fixed;
+    own->fixed_diagonal = fixed_diagonal;
     inherited.reset(); // our own factor is closer from now on
+
+    if (n_fixed <= reduced_threshold * n)
+      {
+        // The full pattern: zero the coupling of fixed indices, keep a
+        // scaled identity on their diagonal (the conditioning of A).
+        own->reduced_index.clear();
+        own->n_free = n - n_fixed;
+        if (reduced.rows() != n || reduced.nonZeros() != A.nonZeros())
+          reduced = A;
+        for (Index j = 0; j < A.outerSize(); ++j)
+          for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1];
+               ++k)
+            {
+              const Index i = A.innerIndexPtr()[k];
+              if (fixed[i] || fixed[j])
+                reduced.valuePtr()[k] = (i == j) ? fixed_diagonal[i] : 0.0;
+              else
+                reduced.valuePtr()[k] = A.valuePtr()[k];
+            }
+        own_valid = own->cholesky.factorise(reduced, counters);
+        return own_valid;
+      }
+
+    // A_FF on its own, in the ordering of A restricted to F.
+    if (full_ordering.empty())
+      full_ordering = SparseCholesky::amd_ordering(A, counters);
+    own->reduced_index.assign(n, -1);
+    Index n_free = 0;
+    for (Index i = 0; i < n; ++i)
+      if (!fixed[i])
+        own->reduced_index[i] = n_free++;
+    own->n_free = n_free;
+
+    std::vector<Index> ordering;
+    ordering.reserve(n_free);
+    for (const Index old_index : full_ordering)
+      if (!fixed[old_index])
+        ordering.push_back(own->reduced_index[old_index]);
+
+    reduced.resize(n_free, n_free);
+    reduced.data().clear();
+    std::vector<Index> column_sizes(n_free, 0);
+    for (Index j = 0; j < n; ++j)
+      if (!fixed[j])
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          column_sizes[own->reduced_index[j]] += !fixed[it.row()];
+    reduced.reserve(column_sizes);
+    for (Index j = 0; j < n; ++j)
+      if (!fixed[j])
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          if (!fixed[it.row()])
+            reduced.insert(own->reduced_index[it.row()],
+                           own->reduced_index[j]) = it.value();
+    reduced.makeCompressed();
+    own_valid = own->cholesky.factorise(reduced, ordering, counters);
     return own_valid;
   }
 
@@ -76,7 +141,7 @@ namespace unilateral::lcp
                               const DenseMatrix     &B,
                               DenseMatrix           &X) const
   {
-    factor.cholesky.solve(B, X);
+    factor.solve(B, X);
     counters.triangular_solves += static_cast<unsigned int>(B.cols());
   }
 

@@ -66,6 +66,7 @@ namespace unilateral::lcp
     void
     merge_counters(Counters &into, const Counters &from)
     {
+      into.orderings += from.orderings;
       into.symbolic_analyses += from.symbolic_analyses;
       into.numeric_factorisations += from.numeric_factorisations;
       into.reused_factorisations += from.reused_factorisations;

@@ -121,7 +121,8 @@ namespace unilateral
       calls.set("solver: " + phase, 1u);
 
     JsonObject &counters = summary.object("counters");
-    counters.set("symbolic_analyses", report.counters.symbolic_analyses)
+    counters.set("orderings", report.counters.orderings)
+      .set("symbolic_analyses", report.counters.symbolic_analyses)
       .set("numeric_factorisations", report.counters.numeric_factorisations)
       .set("reused_factorisations", report.counters.reused_factorisations)
       .set("cg_iterations", report.counters.cg_iterations)

@@ -25,6 +25,8 @@ namespace unilateral::lcp
   /// Work counters: what ran, not how long it took (deterministic, testable).
   struct Counters
   {
+    /// Fill-reducing orderings computed on their own (AMD).
+    unsigned int orderings              = 0;
     unsigned int symbolic_analyses      = 0;
     unsigned int numeric_factorisations = 0;
     /// Systems solved with the factor of a nearby matrix as preconditioner

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace unilateral::lcp
 {
@@ -34,6 +35,25 @@ namespace unilateral::lcp
      */
     bool
     factorise(const SparseMatrix &A, Counters &counters);
+
+    /**
+     * The same with a given fill-reducing ordering (new-to-old, as CHOLMOD's
+     * Perm): the symbolic analysis, run only when the pattern changed, then
+     * skips the ordering step (the plate paper's "ordering established in
+     * the Analyse phase", restricted to a submatrix).
+     */
+    bool
+    factorise(const SparseMatrix        &A,
+              const std::vector<Index> &ordering,
+              Counters                 &counters);
+
+    /// The fill-reducing ordering of the last analysis (new-to-old).
+    std::vector<Index>
+    ordering() const;
+
+    /// The AMD ordering of A (new-to-old) alone, without a factorisation.
+    static std::vector<Index>
+    amd_ordering(const SparseMatrix &A, Counters &counters);
 
     /// Solve A x = b with the current factor.
     void
