@@ -59,8 +59,14 @@ namespace unilateral
                               " on the Schur complement" :
                               "")
                         << std::endl;
+    lcp::SolverParameters parameters = context.solver;
+    if (parameters.pdas.start == lcp::SolverParameters::PdasStart::automatic)
+      parameters.pdas.start =
+        scene.auto_pdas_start_all_active() ?
+          lcp::SolverParameters::PdasStart::all_active :
+          lcp::SolverParameters::PdasStart::zero;
     return lcp::solve_lcp(problem,
-                          context.solver,
+                          parameters,
                           solution,
                           context.progress,
                           scene.auto_regularisation());

@@ -42,9 +42,17 @@ namespace unilateral::lcp
       double tolerance = 0; ///< 0: n * machine epsilon
     } psor;
 
+    enum class PdasStart
+    {
+      automatic, ///< the scene's choice (zero when there is no scene)
+      zero,      ///< u0 = 0, as Ainsworth & Mihai
+      all_active ///< u0 minimises the energy with every bound active
+    };
+
     struct
     {
-      double tau = 1e-3;
+      double    tau   = 1e-3;
+      PdasStart start = PdasStart::automatic;
     } pdas;
 
     struct

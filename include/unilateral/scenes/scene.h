@@ -65,6 +65,16 @@ namespace unilateral
     {
       return 0;
     }
+
+    /**
+     * What "Solver/PDAS/Start = auto" means for this scene: true for "all
+     * active" (structures in contact almost everywhere), false for u0 = 0.
+     */
+    virtual bool
+    auto_pdas_start_all_active() const
+    {
+      return false;
+    }
   };
 
   struct SceneInfo

@@ -45,6 +45,21 @@ namespace unilateral::lcp
         // projection) preconditions the first systems.
         ActiveSetSystem   system(problem.A, report.counters, solution.factor);
         std::vector<char> active(n, 0);
+        if (parameters.pdas.start == SolverParameters::PdasStart::all_active &&
+            solution.factor == nullptr)
+          {
+            // u0: the minimiser with every constraint at its bound.
+            active = problem.constrained_mask();
+            for (Index k = 0; k < problem.n_constrained(); ++k)
+              u[problem.constrained[k]] = problem.lower_bound[k];
+            if (!system.solve(active, problem.b, u))
+              {
+                report.status  = Status::singular;
+                report.message = "PDAS: the system with every constraint "
+                                 "active is singular";
+                return;
+              }
+          }
         const unsigned int limit = iteration_limit(500);
         for (unsigned int iteration = 0;; ++iteration)
           {
