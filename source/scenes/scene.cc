@@ -109,6 +109,16 @@ namespace unilateral
     for (const auto &[phase, seconds] : report.phase_times)
       solver_time.set(phase, seconds);
 
+    // How often each stage ran: tests check from these, not from times, that
+    // a stage a run does not need never ran.
+    JsonObject &calls = summary.object("calls");
+    if (context.timer != nullptr)
+      for (const auto &[section, n] :
+           context.timer->get_summary_data(dealii::TimerOutput::n_calls))
+        calls.set(section, static_cast<unsigned int>(n));
+    for (const auto &[phase, seconds] : report.phase_times)
+      calls.set("solver: " + phase, 1u);
+
     JsonObject &counters = summary.object("counters");
     counters.set("symbolic_analyses", report.counters.symbolic_analyses)
       .set("numeric_factorisations", report.counters.numeric_factorisations)
