@@ -1,12 +1,29 @@
 #include <unilateral/lcp/active_set_system.h>
 
+#include <cmath>
+
 namespace unilateral::lcp
 {
-  ActiveSetSystem::ActiveSetSystem(const SparseMatrix &A, Counters &counters)
+  namespace
+  {
+    unsigned int
+    count_changes(const std::vector<char> &a, const std::vector<char> &b)
+    {
+      unsigned int changes = 0;
+      for (std::size_t i = 0; i < a.size(); ++i)
+        changes += (a[i] != b[i]);
+      return changes;
+    }
+  } // namespace
+
+  ActiveSetSystem::ActiveSetSystem(
+    const SparseMatrix                    &A,
+    Counters                              &counters,
+    std::shared_ptr<const ActiveSetFactor> inherited)
     : A(A)
     , counters(counters)
-    , reduced(A)
-    , cholesky(counters)
+    , own(std::make_shared<ActiveSetFactor>())
+    , inherited(std::move(inherited))
   {
     const Vector diagonal = A.diagonal();
     double       mean     = diagonal.size() > 0 ? diagonal.mean() : 1.0;
@@ -16,31 +33,190 @@ namespace unilateral::lcp
     for (Index i = 0; i < fixed_diagonal.size(); ++i)
       if (!(fixed_diagonal[i] > 0))
         fixed_diagonal[i] = mean;
+    if (this->inherited && this->inherited->fixed.size() != std::size_t(A.rows()))
+      this->inherited.reset();
+  }
+
+  std::shared_ptr<const ActiveSetFactor>
+  ActiveSetSystem::factor() const
+  {
+    if (own_valid)
+      return own;
+    return inherited;
+  }
+
+  void
+  ActiveSetFactor::solve(const DenseMatrix &B, DenseMatrix &X) const
+  {
+    if (reduced_index.empty())
+      {
+        cholesky.solve(B, X);
+        return;
+      }
+    const Index n = static_cast<Index>(fixed.size());
+    DenseMatrix B_free(n_free, B.cols()), X_free;
+    for (Index i = 0; i < n; ++i)
+      if (reduced_index[i] >= 0)
+        B_free.row(reduced_index[i]) = B.row(i);
+    cholesky.solve(B_free, X_free);
+    X.resize(n, B.cols());
+    for (Index i = 0; i < n; ++i)
+      if (reduced_index[i] >= 0)
+        X.row(i) = X_free.row(reduced_index[i]);
+      else
+        X.row(i) = B.row(i) / fixed_diagonal[i];
   }
 
   bool
   ActiveSetSystem::factorise(const std::vector<char> &fixed)
   {
-    if (factor_valid && fixed == factorised_fixed)
-      return true;
+    const Index n       = A.rows();
+    Index       n_fixed = 0;
+    for (const char f : fixed)
+      n_fixed += f;
 
-    // Same pattern as A: zero the coupling of fixed indices, keep a scaled
-    // identity on their diagonal so the conditioning is that of A.
-    for (Index j = 0; j < A.outerSize(); ++j)
+    own->fixed          = fixed;
+    own->fixed_diagonal = fixed_diagonal;
+    inherited.reset(); // our own factor is closer from now on
+
+    if (n_fixed <= reduced_threshold * n)
       {
-        SparseMatrix::InnerIterator original(A, j);
-        for (SparseMatrix::InnerIterator it(reduced, j); it; ++it, ++original)
-          {
-            const Index i = it.row();
-            if (fixed[i] || fixed[j])
-              it.valueRef() = (i == j) ? fixed_diagonal[i] : 0.0;
-            else
-              it.valueRef() = original.value();
-          }
+        // The full pattern: zero the coupling of fixed indices, keep a
+        // scaled identity on their diagonal (the conditioning of A).
+        own->reduced_index.clear();
+        own->n_free = n - n_fixed;
+        if (reduced.rows() != n || reduced.nonZeros() != A.nonZeros())
+          reduced = A;
+        for (Index j = 0; j < A.outerSize(); ++j)
+          for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1];
+               ++k)
+            {
+              const Index i = A.innerIndexPtr()[k];
+              if (fixed[i] || fixed[j])
+                reduced.valuePtr()[k] = (i == j) ? fixed_diagonal[i] : 0.0;
+              else
+                reduced.valuePtr()[k] = A.valuePtr()[k];
+            }
+        own_valid = own->cholesky.factorise(reduced, counters);
+        return own_valid;
       }
-    factorised_fixed = fixed;
-    factor_valid     = cholesky.factorise(reduced);
-    return factor_valid;
+
+    // A_FF on its own, in the ordering of A restricted to F.
+    if (full_ordering.empty())
+      full_ordering = SparseCholesky::amd_ordering(A, counters);
+    own->reduced_index.assign(n, -1);
+    Index n_free = 0;
+    for (Index i = 0; i < n; ++i)
+      if (!fixed[i])
+        own->reduced_index[i] = n_free++;
+    own->n_free = n_free;
+
+    std::vector<Index> ordering;
+    ordering.reserve(n_free);
+    for (const Index old_index : full_ordering)
+      if (!fixed[old_index])
+        ordering.push_back(own->reduced_index[old_index]);
+
+    reduced.resize(n_free, n_free);
+    reduced.data().clear();
+    std::vector<Index> column_sizes(n_free, 0);
+    for (Index j = 0; j < n; ++j)
+      if (!fixed[j])
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          column_sizes[own->reduced_index[j]] += !fixed[it.row()];
+    reduced.reserve(column_sizes);
+    for (Index j = 0; j < n; ++j)
+      if (!fixed[j])
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          if (!fixed[it.row()])
+            reduced.insert(own->reduced_index[it.row()],
+                           own->reduced_index[j]) = it.value();
+    reduced.makeCompressed();
+    own_valid = own->cholesky.factorise(reduced, ordering, counters);
+    return own_valid;
+  }
+
+  void
+  ActiveSetSystem::solve_with(const ActiveSetFactor &factor,
+                              const DenseMatrix     &B,
+                              DenseMatrix           &X) const
+  {
+    factor.solve(B, X);
+    counters.triangular_solves += static_cast<unsigned int>(B.cols());
+  }
+
+  void
+  ActiveSetSystem::apply(const std::vector<char> &fixed,
+                         const DenseMatrix       &Y,
+                         DenseMatrix             &KY) const
+  {
+    DenseMatrix free_part = Y;
+    for (Index i = 0; i < A.rows(); ++i)
+      if (fixed[i])
+        free_part.row(i).setZero();
+    KY = A * free_part;
+    for (Index i = 0; i < A.rows(); ++i)
+      if (fixed[i])
+        KY.row(i) = fixed_diagonal[i] * Y.row(i);
+  }
+
+  bool
+  ActiveSetSystem::preconditioned_cg(const std::vector<char> &fixed,
+                                     const ActiveSetFactor   &preconditioner,
+                                     const DenseMatrix       &B,
+                                     DenseMatrix             &X,
+                                     const unsigned int       max_iterations)
+  {
+    // Start from the preconditioner's answer; then CG on the residual. The
+    // tolerance is what a backward-stable direct solve achieves.
+    solve_with(preconditioner, B, X);
+    DenseMatrix KX;
+    apply(fixed, X, KX);
+    counters.matrix_vector_products += static_cast<unsigned int>(B.cols());
+    DenseMatrix R = B - KX;
+    for (Index column = 0; column < B.cols(); ++column)
+      {
+        const double target =
+          1e-14 * (B.col(column).norm() + KX.col(column).norm());
+        Vector       r = R.col(column);
+        Vector       x = X.col(column);
+        if (r.norm() <= target)
+          continue;
+        DenseMatrix z_matrix;
+        solve_with(preconditioner, r, z_matrix);
+        Vector z = z_matrix.col(0), p;
+        p               = z;
+        double rz       = r.dot(z);
+        bool   converged = false;
+        for (unsigned int iteration = 0; iteration < max_iterations;
+             ++iteration)
+          {
+            DenseMatrix Kp;
+            apply(fixed, p, Kp);
+            ++counters.matrix_vector_products;
+            ++counters.cg_iterations;
+            const double curvature = p.dot(Kp.col(0));
+            if (!(curvature > 0))
+              break; // K(X) not positive definite along p: refactorise
+            const double alpha = rz / curvature;
+            x += alpha * p;
+            r -= alpha * Kp.col(0);
+            if (r.norm() <= target)
+              {
+                converged = true;
+                break;
+              }
+            solve_with(preconditioner, r, z_matrix);
+            z                    = z_matrix.col(0);
+            const double rz_next = r.dot(z);
+            p                    = z + (rz_next / rz) * p;
+            rz                   = rz_next;
+          }
+        if (!converged)
+          return false;
+        X.col(column) = x;
+      }
+    return true;
   }
 
   bool
@@ -59,9 +235,6 @@ namespace unilateral::lcp
                          const DenseMatrix       &R,
                          DenseMatrix             &X)
   {
-    if (!factorise(fixed))
-      return false;
-
     const Index n = A.rows();
     DenseMatrix fixed_part = DenseMatrix::Zero(n, X.cols());
     for (Index i = 0; i < n; ++i)
@@ -78,7 +251,36 @@ namespace unilateral::lcp
         rhs.row(i) = R.row(i) - coupling.row(i);
 
     DenseMatrix solution;
-    cholesky.solve(rhs, solution);
+    bool        solved = false;
+    if (own_valid && own->fixed == fixed)
+      {
+        solve_with(*own, rhs, solution);
+        solved = true;
+      }
+    else
+      {
+        // A nearby factor: our own for another active set, or an inherited
+        // one (A + eps I) for the same.
+        const ActiveSetFactor *nearby =
+          own_valid ? own.get() : inherited.get();
+        if (nearby != nullptr)
+          {
+            const unsigned int changes = count_changes(nearby->fixed, fixed);
+            if (changes <= max_changes &&
+                preconditioned_cg(fixed, *nearby, rhs, solution,
+                                  2 * changes + 8))
+              {
+                ++counters.reused_factorisations;
+                solved = true;
+              }
+          }
+      }
+    if (!solved)
+      {
+        if (!factorise(fixed))
+          return false;
+        solve_with(*own, rhs, solution);
+      }
     for (Index i = 0; i < n; ++i)
       if (!fixed[i])
         X.row(i) = solution.row(i);

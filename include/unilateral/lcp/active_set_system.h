@@ -2,10 +2,36 @@
 
 #include <unilateral/lcp/sparse_cholesky.h>
 
+#include <memory>
 #include <vector>
 
 namespace unilateral::lcp
 {
+  /**
+   * A factorisation of K(X): A with the indices X fixed, i.e. A_FF on the
+   * free indices F and a diagonal D_X on the fixed ones. Either A_FF was
+   * extracted and factorised on its own (in the ordering of A restricted to
+   * F), or the full pattern was factorised with the fixed rows and columns
+   * replaced by D_X. Kept so that a later system on a nearby matrix can use it
+   * as a preconditioner: the next active set, or the projection step (A
+   * instead of A + eps I).
+   */
+  struct ActiveSetFactor
+  {
+    std::vector<char> fixed;
+    /// Position of each free index in A_FF, -1 for fixed ones; empty when
+    /// the full pattern was factorised.
+    std::vector<Index> reduced_index;
+    Index              n_free = 0;
+    /// D_X on the fixed indices.
+    Vector         fixed_diagonal;
+    SparseCholesky cholesky;
+
+    /// X = K(X)^-1 B.
+    void
+    solve(const DenseMatrix &B, DenseMatrix &X) const;
+  };
+
   /**
    * The linear systems of every active-set and pivoting method: for a set X
    * of fixed indices with given values x_X, solve
@@ -13,15 +39,30 @@ namespace unilateral::lcp
    * i.e. minimise 1/2 x^T A x - r^T x with x_X fixed (the "QEP" of
    * Ainsworth & Mihai, eq. (57) of Fernandes et al.).
    *
-   * The reduced matrix is never extracted: the full pattern is kept and the
-   * fixed rows and columns are replaced by their diagonal entry, so one
-   * symbolic analysis of A serves every active set. A factor is reused as long
-   * as the fixed set does not change.
+   * Two ways to factorise K(X), chosen by the size of X: with few fixed
+   * indices the full pattern is kept (fixed rows and columns replaced by the
+   * diagonal), so the one symbolic analysis of A serves every active set;
+   * with many (more than a sixth of the unknowns, where the smaller factor
+   * pays for a symbolic pass) A_FF is extracted and factorised in the AMD
+   * ordering of A restricted to F, "in the ordering established in the
+   * Analyse phase" as Fernandes et al. do for C_RR.
+   *
+   * Factorisations are reused. A factor for exactly this X is used directly.
+   * A factor for a nearby matrix, one whose fixed set differs in at most
+   * max_changes indices (K then differs by a matrix of rank <= 2 changes), or
+   * an inherited factor of A + eps I for the same X, preconditions conjugate
+   * gradients, which then converge in about 2 changes + 1 iterations. Only
+   * if CG does not reach the direct solver's accuracy in its iteration
+   * budget is K(X) factorised anew. The rule is deterministic.
    */
   class ActiveSetSystem
   {
   public:
-    ActiveSetSystem(const SparseMatrix &A, Counters &counters);
+    /// @p inherited: a factor of a nearby matrix (e.g. of A + eps I) to
+    /// try first; may be null.
+    ActiveSetSystem(const SparseMatrix                     &A,
+                    Counters                               &counters,
+                    std::shared_ptr<const ActiveSetFactor>  inherited = {});
 
     /**
      * On entry x holds the fixed values on X (other entries are ignored); on
@@ -35,17 +76,50 @@ namespace unilateral::lcp
     bool
     solve(const std::vector<char> &fixed, const DenseMatrix &R, DenseMatrix &X);
 
+    /// The most recent factor (own or inherited), for a follow-up system.
+    std::shared_ptr<const ActiveSetFactor>
+    factor() const;
+
+    /// Fixed-set changes up to which a factor is reused through CG.
+    static constexpr unsigned int max_changes = 16;
+
+    /// Fraction of fixed indices above which A_FF is factorised on its own.
+    static constexpr double reduced_threshold = 1.0 / 6.0;
+
   private:
     bool
     factorise(const std::vector<char> &fixed);
 
-    const SparseMatrix &A;
-    Counters           &counters;
-    SparseMatrix        reduced;
-    SparseCholesky      cholesky;
-    std::vector<char>   factorised_fixed;
-    bool                factor_valid = false;
+    /// K(X) y: A on the free part, the diagonal on the fixed part.
+    void
+    apply(const std::vector<char> &fixed, const DenseMatrix &Y,
+          DenseMatrix &KY) const;
+
+    /// Preconditioned CG on K(X) X = B with @p preconditioner; true if
+    /// every column reached the tolerance within @p max_iterations.
+    /// Solve with @p factor, counting the triangular solves.
+    void
+    solve_with(const ActiveSetFactor &factor,
+               const DenseMatrix     &B,
+               DenseMatrix           &X) const;
+
+    bool
+    preconditioned_cg(const std::vector<char> &fixed,
+                      const ActiveSetFactor   &preconditioner,
+                      const DenseMatrix       &B,
+                      DenseMatrix             &X,
+                      unsigned int             max_iterations);
+
+    const SparseMatrix                     &A;
+    Counters                               &counters;
+    /// The full pattern with fixed rows/columns diagonal, or A_FF.
+    SparseMatrix                            reduced;
+    /// AMD ordering of A (new-to-old), computed on first need.
+    std::vector<Index>                      full_ordering;
+    std::shared_ptr<ActiveSetFactor>        own;
+    bool                                    own_valid = false;
+    std::shared_ptr<const ActiveSetFactor>  inherited;
     /// Diagonal used for fixed rows: A_jj if positive, else the mean diagonal.
-    Vector              fixed_diagonal;
+    Vector                                  fixed_diagonal;
   };
 } // namespace unilateral::lcp

@@ -148,5 +148,6 @@ namespace unilateral::lcp
                              "& Judice (eqs. 42-56, start 66)",
                              false,
                              false,
-                             false)
+                             false,
+                             0)
 } // namespace unilateral::lcp

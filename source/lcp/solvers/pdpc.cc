@@ -189,5 +189,6 @@ namespace unilateral::lcp
                              "(Ainsworth & Mihai), with diagonal scaling",
                              false,
                              false,
-                             false)
+                             false,
+                             0)
 } // namespace unilateral::lcp
