@@ -18,8 +18,7 @@ namespace unilateral::lcp
       std::ifstream in(file_name);
       if (!in)
         throw InputError("cannot read " + what + " file '" + file_name +
-                         "': check the path (relative paths are taken from "
-                         "the working directory)");
+                         "': no such file, or not readable");
       return in;
     }
 

@@ -198,27 +198,33 @@ namespace unilateral::lcp
     if (displacement_scale == 0)
       displacement_scale = 1;
 
-    KktResiduals      result;
+    KktResiduals            result;
     const std::vector<char> mask = problem.constrained_mask();
     for (Index i = 0; i < n; ++i)
       if (!mask[i])
         result.stationarity =
           std::max(result.stationarity, std::abs(lambda[i]));
+    double mean_diagonal = n > 0 ? problem.A.diagonal().mean() : 1.0;
+    if (!(mean_diagonal > 0))
+      mean_diagonal = 1.0;
     for (Index k = 0; k < problem.n_constrained(); ++k)
       {
         const Index  i     = problem.constrained[k];
         const double slack = u[i] - problem.lower_bound[k];
+        const double stiffness =
+          problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : mean_diagonal;
         result.primal_feasibility =
           std::max(result.primal_feasibility, -slack);
         result.dual_feasibility =
           std::max(result.dual_feasibility, -lambda[i]);
         result.complementarity =
-          std::max(result.complementarity, std::abs(slack * lambda[i]));
+          std::max(result.complementarity,
+                   std::min(std::abs(slack) * stiffness, std::abs(lambda[i])));
       }
     result.stationarity /= force_scale;
     result.primal_feasibility /= displacement_scale;
     result.dual_feasibility /= force_scale;
-    result.complementarity /= (force_scale * displacement_scale);
+    result.complementarity /= force_scale;
     return result;
   }
 

@@ -116,33 +116,37 @@ namespace unilateral::lcp
       const double relative_eps = parameters.regularisation >= 0 ?
                                     parameters.regularisation :
                                     auto_regularisation;
-      if (!info.needs_definite_matrix || relative_eps == 0)
+      const bool regularise = info.needs_definite_matrix && relative_eps > 0;
+
+      // Stage 1: the method, on A + eps d I if it needs a definite matrix.
+      if (!regularise)
         {
           PhaseTimer timer(report, "solve");
           run_method(info, problem, parameters, solution, report, progress);
-          return report;
+          if (report.status == Status::singular && info.needs_definite_matrix)
+            report.message += "; regularise ('Solver/Regularisation' > 0)";
         }
-
-      // Stage 1: the regularised problem A + eps d I.
-      Problem regularised;
-      {
-        PhaseTimer timer(report, "regularise");
-        regularised = problem;
-        const double mean_diagonal =
-          problem.size() > 0 ? problem.A.diagonal().mean() : 1.0;
-        report.regularisation =
-          relative_eps * (mean_diagonal > 0 ? mean_diagonal : 1.0);
-        for (Index j = 0; j < regularised.size(); ++j)
-          regularised.A.coeffRef(j, j) += report.regularisation;
-      }
-      {
-        PhaseTimer timer(report, "solve");
-        run_method(info, regularised, parameters, solution, report, progress);
-      }
-      if (!report.converged() || !parameters.projection)
+      else
+        {
+          Problem regularised;
+          {
+            PhaseTimer timer(report, "regularise");
+            regularised = problem;
+            const double mean_diagonal =
+              problem.size() > 0 ? problem.A.diagonal().mean() : 1.0;
+            report.regularisation =
+              relative_eps * (mean_diagonal > 0 ? mean_diagonal : 1.0);
+            for (Index j = 0; j < regularised.size(); ++j)
+              regularised.A.coeffRef(j, j) += report.regularisation;
+          }
+          PhaseTimer timer(report, "solve");
+          run_method(info, regularised, parameters, solution, report, progress);
+        }
+      if (!report.converged() || !parameters.projection ||
+          (info.exact && !regularise))
         return report;
 
-      // Stage 2: the projection, PDAS on A from u_eps.
+      // Stage 2: the projection, PDAS on A from the approximate solution.
       PhaseTimer timer(report, "projection");
       Report     projection;
       run_method(SolverRegistry::get("pdas"),
@@ -158,6 +162,11 @@ namespace unilateral::lcp
         {
           report.status  = projection.status;
           report.message = "projection step: " + projection.message;
+          if (projection.status == Status::singular)
+            report.message +=
+              ": without regularisation this LCP has no unique solution for "
+              "that active set (check that every body can be supported), or "
+              "set 'Solver/Projection = false' to keep the regularised one";
         }
       return report;
     }

@@ -112,6 +112,14 @@ namespace unilateral::lcp
                         Bool(),
                         "Scale A to unit diagonal first, as Ainsworth & Mihai "
                         "do to keep Step 4 solvable.");
+      prm.declare_entry("Step to boundary",
+                        "0.9995",
+                        Double(0, 1),
+                        "A step cut short by a bound (alpha_1 or alpha_2 < 1) "
+                        "is multiplied by this factor so the iterate stays "
+                        "strictly interior. 1 is the printed rule, which can "
+                        "land exactly on the boundary and make Step 4 "
+                        "singular.");
       prm.leave_subsection();
 
       prm.enter_subsection("Interior point");
@@ -210,6 +218,10 @@ namespace unilateral::lcp
       pdpc.tolerance_gap      = prm.get_double("Complementarity tolerance");
       pdpc.tolerance_residual = prm.get_double("Residual tolerance");
       pdpc.diagonal_scaling   = prm.get_bool("Diagonal scaling");
+      pdpc.step_to_boundary   = prm.get_double("Step to boundary");
+      check_parameter(pdpc.step_to_boundary > 0, "Solver/PDPC",
+                      "Step to boundary", pdpc.step_to_boundary,
+                      "must be in (0, 1]");
       check_parameter(pdpc.initial_point > 0, "Solver/PDPC", "Initial point",
                       pdpc.initial_point, "must be > 0 (interior start)");
       prm.leave_subsection();

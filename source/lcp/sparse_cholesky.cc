@@ -80,7 +80,12 @@ namespace unilateral::lcp
   {
     if (!A.isCompressed())
       throw std::logic_error("SparseCholesky needs a compressed matrix");
-    auto          &impl   = *implementation;
+    auto &impl = *implementation;
+    if (A.rows() == 0) // nothing to factorise (CHOLMOD rejects 0 x 0)
+      {
+        impl.factor_valid = true;
+        return true;
+      }
     cholmod_sparse matrix = Implementation::view(A);
 
     const std::uint64_t hash = Implementation::hash_pattern(A);
@@ -93,7 +98,7 @@ namespace unilateral::lcp
         if (impl.factor == nullptr)
           throw std::runtime_error(
             "CHOLMOD analysis failed (status " +
-            std::to_string(impl.common.status) + "): out of memory?");
+            std::to_string(impl.common.status) + ")");
         impl.pattern_size     = A.rows();
         impl.pattern_nonzeros = A.nonZeros();
         impl.pattern_hash     = hash;
@@ -141,6 +146,11 @@ namespace unilateral::lcp
     auto &impl = *implementation;
     if (!impl.factor_valid)
       throw std::logic_error("SparseCholesky::solve without a valid factor");
+    if (B.rows() == 0)
+      {
+        X.resize(0, B.cols());
+        return;
+      }
     cholmod_dense rhs{};
     rhs.nrow  = B.rows();
     rhs.ncol  = B.cols();

@@ -53,6 +53,8 @@ namespace unilateral::lcp
       double tolerance_gap   = 0;    ///< tol1; 0: n_c * machine epsilon
       double tolerance_residual = 0; ///< tol2; 0: n * sqrt(machine epsilon)
       bool   diagonal_scaling = true;
+      /// Fraction of a step to the boundary that is taken (1: the paper).
+      double step_to_boundary = 0.9995;
     } pdpc;
 
     struct
@@ -120,6 +122,10 @@ namespace unilateral::lcp
     bool needs_definite_matrix = false;
     /// Dense methods refuse problems larger than max_dense_size.
     bool dense = false;
+    /// Ends on an exact complementary basis (active-set and pivoting
+    /// methods). Approximate methods (PSOR, interior point) get the
+    /// projection step afterwards when 'Projection' is on.
+    bool exact = true;
     std::function<std::unique_ptr<Solver>(const SolverParameters &)> create;
   };
 
@@ -149,7 +155,8 @@ namespace unilateral::lcp
     entries();
   };
 
-#define UNILATERAL_REGISTER_SOLVER(classname, name, description, definite, dense) \
+#define UNILATERAL_REGISTER_SOLVER(                                              \
+  classname, name, description, definite, dense, exact)                          \
   namespace                                                                      \
   {                                                                              \
     const bool registered_##classname = ::unilateral::lcp::SolverRegistry::add( \
@@ -157,6 +164,7 @@ namespace unilateral::lcp
        description,                                                              \
        definite,                                                                 \
        dense,                                                                    \
+       exact,                                                                    \
        [](const ::unilateral::lcp::SolverParameters &parameters)                 \
          -> std::unique_ptr<::unilateral::lcp::Solver> {                         \
          return std::make_unique<classname>(parameters);                         \
@@ -168,6 +176,7 @@ namespace unilateral::lcp
    *  - methods that need a definite matrix get A + eps I (eps relative to the
    *    mean diagonal; "auto" takes @p auto_regularisation) and then the
    *    projection step (PDAS on A from u_eps) that recovers the exact solution;
+   *    approximate methods (PSOR, interior point) get the projection too;
    *  - with schur_complement, the reduced LCP on S is formed (dense) and
    *    solved, and u_E recovered;
    *  - the report gets KKT residuals, energy and active set of the final u

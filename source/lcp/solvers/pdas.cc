@@ -84,8 +84,7 @@ namespace unilateral::lcp
                   "PDAS: the reduced system A_FF is singular for the active "
                   "set of iteration " +
                   std::to_string(iteration + 1) +
-                  " (a body is left unsupported); regularise "
-                  "('Solver/Regularisation' > 0)";
+                  " (some body is held by no active constraint)";
                 break;
               }
             report.iterations = iteration + 1;
@@ -103,5 +102,6 @@ namespace unilateral::lcp
                              "primal-dual active set (Hintermueller et al.; "
                              "Ainsworth & Mihai), parameter tau",
                              true,
-                             false)
+                             false,
+                             true)
 } // namespace unilateral::lcp

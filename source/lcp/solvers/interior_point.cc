@@ -1,0 +1,152 @@
+/**
+ * The interior-point method of Fernandes, Figueiredo & Judice (2002), Section
+ * 3.1, for the MLCP (32)-(35): w = C z - F, z_J1 >= psi, w_J1 >= 0, w_Jf = 0.
+ * In our notation z = u, w = lambda, psi = l, J1 = S, Jf = the rest.
+ *   mu_k  = delta (z - psi)^T w / |J1|                                  (42)
+ *   (C + diag_J1(w / (z - psi))) du = F - C z + mu_k / (z - psi)        (47)
+ *   dw_i  = mu_k / (z_i - psi_i) - w_i (1 + du_i / (z_i - psi_i))
+ *     (the printed (47) has w_J1 + F_J1 - C_J1 z on the right; eliminating
+ *     v from the Newton system (46) with the printed dw gives no w there, and
+ *     with it the iterates never become feasible: a typo, not repeated here)
+ *   alpha = min(1, beta alpha_max), alpha_max the largest step keeping
+ *           z - psi >= 0 and w >= 0                                  (50)-(51)
+ *   stop when ||C z - F - w||_2 <= eps_1 and (z - psi)^T w <= eps_2 (55)-(56)
+ * Starting point (66): z0 = 0, w0_i = max(10, -F_i) on J1. Where psi_i >= 0
+ * the point z0 = 0 is not interior; there we start at psi_i + max(1, |psi|_inf)
+ * (the paper's obstacles are all negative, so its runs are unaffected).
+ * beta = 0.99995 as in the paper; delta is not stated there (default 0.1).
+ */
+#include <unilateral/lcp/shifted_system.h>
+#include <unilateral/lcp/solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+
+namespace unilateral::lcp
+{
+  namespace
+  {
+    class InteriorPoint : public Solver
+    {
+    public:
+      using Solver::Solver;
+
+      void
+      solve(const Problem &problem,
+            Solution      &solution,
+            Report        &report,
+            std::ostream  *progress) override
+      {
+        const Index n   = problem.size();
+        const Index n_c = problem.n_constrained();
+        const auto &options = parameters.interior_point;
+        const Vector &psi   = problem.lower_bound;
+
+        // Starting point (66).
+        const double psi_size =
+          n_c > 0 ? std::max(1.0, psi.lpNorm<Eigen::Infinity>()) : 1.0;
+        Vector z = Vector::Zero(n);
+        Vector gap(n_c), w(n_c);
+        for (Index k = 0; k < n_c; ++k)
+          {
+            const Index i = problem.constrained[k];
+            if (!(psi[k] < 0))
+              z[i] = psi[k] + psi_size;
+            gap[k] = z[i] - psi[k];
+            w[k]   = std::max(10.0, -problem.b[i]);
+          }
+
+        ShiftedSystem newton(problem.A, report.counters);
+        Vector        shift = Vector::Zero(n), rhs(n), du(n), dw(n_c);
+        const unsigned int limit = iteration_limit(500);
+        for (unsigned int k = 0;; ++k)
+          {
+            // r = F - C z + w: minus the linear infeasibility (49).
+            Vector r = problem.b - problem.A * z;
+            ++report.counters.matrix_vector_products;
+            for (Index j = 0; j < n_c; ++j)
+              r[problem.constrained[j]] += w[j];
+            const double complementarity = gap.dot(w);
+            const double infeasibility   = r.norm();
+            if (progress != nullptr && k > 0)
+              *progress << "    interior point iteration " << k
+                        << std::scientific << std::setprecision(2)
+                        << ": gap " << complementarity << ", infeasibility "
+                        << infeasibility << std::defaultfloat << std::endl;
+            if (infeasibility <= options.residual_tolerance &&
+                complementarity <= options.complementarity_tolerance)
+              {
+                report.status = Status::converged;
+                break;
+              }
+            if (k >= limit)
+              {
+                report.status  = Status::iteration_limit;
+                report.message = "interior point reached " +
+                                 std::to_string(limit) + " iterations (gap " +
+                                 std::to_string(complementarity) +
+                                 ", infeasibility " +
+                                 std::to_string(infeasibility) + ")";
+                break;
+              }
+            report.iterations = k + 1;
+
+            // (42) and (47).
+            const double mu =
+              n_c > 0 ? options.centering * complementarity / n_c : 0.0;
+            rhs = r;
+            for (Index j = 0; j < n_c; ++j)
+              {
+                const Index i = problem.constrained[j];
+                shift[i]      = w[j] / gap[j];
+                rhs[i] += mu / gap[j] - w[j];
+              }
+            if (!newton.factorise(shift))
+              {
+                report.status  = Status::singular;
+                report.message = "interior point: the matrix of (47) is not "
+                                 "positive definite at iteration " +
+                                 std::to_string(k + 1) +
+                                 " (C_JfJf singular?)";
+                break;
+              }
+            newton.solve(rhs, du);
+
+            // (51) and (50).
+            double alpha_max = std::numeric_limits<double>::infinity();
+            for (Index j = 0; j < n_c; ++j)
+              {
+                const double dz = du[problem.constrained[j]];
+                dw[j] = mu / gap[j] - w[j] * (1 + dz / gap[j]);
+                if (dz < 0)
+                  alpha_max = std::min(alpha_max, gap[j] / -dz);
+                if (dw[j] < 0)
+                  alpha_max = std::min(alpha_max, w[j] / -dw[j]);
+              }
+            const double alpha = std::min(1.0, options.step_factor * alpha_max);
+
+            // (54).
+            z += alpha * du;
+            for (Index j = 0; j < n_c; ++j)
+              {
+                gap[j] += alpha * du[problem.constrained[j]];
+                w[j] += alpha * dw[j];
+              }
+          }
+        for (Index j = 0; j < n_c; ++j)
+          z[problem.constrained[j]] = psi[j] + gap[j];
+        solution.u = z;
+      }
+    };
+  } // namespace
+
+  UNILATERAL_REGISTER_SOLVER(InteriorPoint,
+                             "interior_point",
+                             "interior-point method of Fernandes, Figueiredo "
+                             "& Judice (eqs. 42-56, start 66)",
+                             false,
+                             false,
+                             false)
+} // namespace unilateral::lcp

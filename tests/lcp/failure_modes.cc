@@ -1,0 +1,185 @@
+// Every failure mode is reported, never hidden: iteration limits, an LCP
+// without solution (Graves proves it), singular reduced systems, and bad
+// input, which must give one line naming the problem and a nonzero exit code.
+#include "../lcp_test_tools.h"
+
+#include <unilateral/application.h>
+
+#include <fstream>
+#include <sstream>
+
+using namespace test;
+
+namespace
+{
+  void
+  report_solver(const std::string &what, const Report &report)
+  {
+    std::cout << what << ": status " << to_string(report.status)
+              << ", converged " << yes_no(report.converged()) << "\n";
+    if (!report.message.empty())
+      std::cout << "  " << report.message << "\n";
+  }
+
+  // A membrane on a line: -u'' = -1 on 40 nodes with u >= -0.05; PDAS needs
+  // several active-set changes.
+  Problem
+  chain()
+  {
+    const Index n = 40;
+    DenseMatrix A = DenseMatrix::Zero(n, n);
+    for (Index i = 0; i < n; ++i)
+      {
+        A(i, i) = 2;
+        if (i > 0)
+          A(i, i - 1) = A(i - 1, i) = -1;
+      }
+    std::vector<Index>  S(n);
+    std::vector<double> lower(n, -0.05 * n * n);
+    for (Index i = 0; i < n; ++i)
+      S[i] = i;
+    return make_problem(A, Vector::Constant(n, -1.0), S, lower);
+  }
+
+  void
+  write(const std::string &file_name, const std::string &text)
+  {
+    std::ofstream(file_name) << text;
+  }
+
+  // Run the application as a user would and show what they would see.
+  void
+  run(const std::string &what, const std::vector<std::string> &arguments)
+  {
+    std::vector<std::string> storage = {"unilateral"};
+    storage.insert(storage.end(), arguments.begin(), arguments.end());
+    std::vector<char *> argv;
+    for (auto &argument : storage)
+      argv.push_back(argument.data());
+    std::ostringstream out, err;
+    const int code = unilateral::run_application(
+      static_cast<int>(argv.size()), argv.data(), out, err);
+    const std::string message = err.str();
+    const auto lines = std::count(message.begin(), message.end(), '\n');
+    if (code == 0)
+      std::cout << what << ": exit code 0, error output empty: "
+                << yes_no(message.empty()) << "\n";
+    else
+      std::cout << what << ": exit code " << code << ", one line: "
+                << yes_no(lines == 1) << "\n  " << message;
+  }
+
+  void
+  write_lcp_prm(const std::string &name,
+                const std::string &matrix,
+                const std::string &rhs,
+                const std::string &solver_lines = "")
+  {
+    write(name + ".prm",
+          "set Scene = lcp\n"
+          "subsection Output\n  set Directory = results\n"
+          "  set Print timings = false\n  set Progress = false\nend\n"
+          "subsection LCP\n  set Matrix file = " + matrix +
+            "\n  set Right-hand side file = " + rhs +
+            "\n  set Constraints file = c.txt\nend\n"
+            "subsection Solver\n" + solver_lines + "end\n");
+  }
+} // namespace
+
+int
+main()
+{
+  // Iteration limits.
+  {
+    const Problem    problem = chain();
+    SolverParameters parameters;
+    parameters.max_iterations = 2;
+    Vector u;
+    report_solver("pdas limited to 2 iterations",
+                  solve_with(problem, {"pdas"}, u, -1, parameters));
+    report_solver("psor limited to 2 sweeps",
+                  solve_with(problem, {"psor"}, u, -1, parameters));
+    report_solver("block_pivoting limited to 2 iterations",
+                  solve_with(problem, {"block_pivoting"}, u, -1, parameters));
+    report_solver("pdas without limit",
+                  solve_with(problem, {"pdas"}, u));
+  }
+
+  // LCPs without a solution: Graves says so.
+  {
+    DenseMatrix A(1, 1);
+    A << 0;
+    Vector b(1);
+    b << 1; // lambda = -1 whatever u is
+    Vector u;
+    report_solver("graves, A = 0, b = 1",
+                  solve_with(make_problem(A, b, {0}, {0}), {"graves"}, u));
+    DenseMatrix A2(2, 2);
+    A2 << 1, -1, -1, 1;
+    Vector b2(2);
+    b2 << 1, 1; // lambda_1 + lambda_2 = -2 < 0 always
+    report_solver("graves, lambda_1 + lambda_2 = -2",
+                  solve_with(make_problem(A2, b2, {0, 1}, {0, 0}), {"graves"},
+                             u));
+  }
+
+  // Singular reduced systems.
+  {
+    DenseMatrix A(2, 2);
+    A << 1, -1, -1, 1;
+    Vector b(2);
+    b << 1, -1; // index 0 leaves its bound: A itself must be solved
+    Vector u;
+    report_solver("pdas, unregularised, floating body",
+                  solve_with(make_problem(A, b, {0}, {0}), {"pdas"}, u, 0));
+    report_solver("pdas, regularised, floating body without net load "
+                  "(no unique solution)",
+                  solve_with(make_problem(A, b, {0}, {0}), {"pdas"}, u, 1e-9));
+    DenseMatrix A2(2, 2);
+    A2 << 1, 0, 0, 0;
+    Vector b2(2);
+    b2 << 1, 1;
+    report_solver("Schur complement with A_EE = 0",
+                  solve_with(make_problem(A2, b2, {0}, {0}), {"pdas", true}, u));
+  }
+
+  // Bad input through the application.
+  write("A.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n"
+        "1 1 2\n2 1 -1\n2 2 2\n");
+  write("A_unsymmetric.mtx",
+        "%%MatrixMarket matrix coordinate real general\n2 2 3\n"
+        "1 1 2\n2 1 -1\n2 2 2\n");
+  write("A_nan.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n"
+        "1 1 nan\n2 2 2\n");
+  write("b.txt", "1\n-2\n");
+  write("b3.txt", "1\n-2\n3\n");
+  write("b_nan.txt", "1\nnan\n");
+  write("c.txt", "1 0\n2 0\n");
+
+  write_lcp_prm("good", "A.mtx", "b.txt");
+  run("a good LCP", {"good.prm"});
+  write_lcp_prm("mismatch", "A.mtx", "b3.txt");
+  run("dimension mismatch", {"mismatch.prm"});
+  write_lcp_prm("unsymmetric", "A_unsymmetric.mtx", "b.txt");
+  run("non-symmetric A", {"unsymmetric.prm"});
+  write_lcp_prm("nan_matrix", "A_nan.mtx", "b.txt");
+  run("NaN in A", {"nan_matrix.prm"});
+  write_lcp_prm("nan_rhs", "A.mtx", "b_nan.txt");
+  run("NaN in b", {"nan_rhs.prm"});
+  write_lcp_prm("negative_eps", "A.mtx", "b.txt",
+                "  set Regularisation = -1e-3\n");
+  run("eps < 0", {"negative_eps.prm"});
+  write_lcp_prm("unreadable", "missing.mtx", "b.txt");
+  run("unreadable matrix file", {"unreadable.prm"});
+  write_lcp_prm("unknown_method", "A.mtx", "b.txt", "  set Method = lemke\n");
+  run("unknown method", {"unknown_method.prm"});
+  write_lcp_prm("dense_too_large", "A.mtx", "b.txt",
+                "  set Method = graves\n  set Maximum dense size = 1\n");
+  run("graves beyond the dense limit", {"dense_too_large.prm"});
+  write("typo.prm", "set Scene = lcp\nset Sceen = lcp\n");
+  run("misspelt parameter", {"typo.prm"});
+  run("missing parameter file", {"no_such_file.prm"});
+  run("unknown option", {"--frobnicate"});
+}

@@ -1,0 +1,157 @@
+// Helpers for the solver tests: build small LCPs, solve them with every
+// method, and enumerate complementary bases for the exact answer.
+#pragma once
+
+#include <unilateral/lcp/problem.h>
+#include <unilateral/lcp/solver.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace test
+{
+  using namespace unilateral::lcp;
+
+  // A method with its options, as a user would select it.
+  struct Method
+  {
+    std::string name;
+    bool        schur_complement = false;
+    std::string label() const
+    {
+      return name + (schur_complement ? "_sc" : "");
+    }
+  };
+
+  // Every method of both papers: the full LCP ones, the Schur-complement
+  // ones Ainsworth & Mihai run (graves, lssnn, pdas, pdpc), and the plate's.
+  inline std::vector<Method>
+  all_methods(const bool has_unconstrained)
+  {
+    std::vector<Method> methods = {{"psor"},
+                                   {"lssnn"},
+                                   {"pdas"},
+                                   {"pdpc"},
+                                   {"interior_point"},
+                                   {"block_pivoting"},
+                                   {"graves", has_unconstrained},
+                                   {"lssnn", true},
+                                   {"pdas", true},
+                                   {"pdpc", true}};
+    return methods;
+  }
+
+  inline Problem
+  make_problem(const DenseMatrix        &A,
+               const Vector             &b,
+               const std::vector<Index> &S,
+               const std::vector<double> &lower)
+  {
+    Problem problem;
+    problem.A           = A.sparseView();
+    problem.b           = b;
+    problem.constrained = S;
+    problem.lower_bound = Eigen::Map<const Vector>(lower.data(), lower.size());
+    check_and_normalise(problem);
+    return problem;
+  }
+
+  inline Report
+  solve_with(const Problem &problem,
+             const Method  &method,
+             Vector        &u,
+             double         regularisation = -1,
+             SolverParameters parameters    = SolverParameters())
+  {
+    parameters.method           = method.name;
+    parameters.schur_complement = method.schur_complement;
+    parameters.regularisation   = regularisation;
+    Solution solution;
+    const Report report = solve_lcp(problem, parameters, solution, nullptr, 0);
+    u                   = solution.u;
+    return report;
+  }
+
+  /**
+   * The exact solution by enumeration: for every subset X of S (the active
+   * set) solve the equality-constrained system with u_X = l_X, and keep the
+   * basis whose solution is feasible (u_S >= l_S, lambda_X >= 0). For SPD A
+   * exactly one basis qualifies (up to degenerate ties, which give the same
+   * u). Returns the number of feasible bases found.
+   */
+  inline int
+  enumerate(const DenseMatrix        &A,
+            const Vector             &b,
+            const std::vector<Index> &S,
+            const std::vector<double> &lower,
+            Vector                   &u_exact)
+  {
+    const Index n     = A.rows();
+    const Index n_c   = static_cast<Index>(S.size());
+    int         found = 0;
+    for (long mask = 0; mask < (1L << n_c); ++mask)
+      {
+        std::vector<char> fixed(n, 0);
+        Vector            u = Vector::Zero(n);
+        for (Index k = 0; k < n_c; ++k)
+          if (mask & (1L << k))
+            {
+              fixed[S[k]] = 1;
+              u[S[k]]     = lower[k];
+            }
+        std::vector<Index> free;
+        for (Index i = 0; i < n; ++i)
+          if (!fixed[i])
+            free.push_back(i);
+        const Index m = static_cast<Index>(free.size());
+        DenseMatrix A_FF(m, m);
+        Vector      r(m);
+        for (Index a = 0; a < m; ++a)
+          {
+            r[a] = b[free[a]];
+            for (Index j = 0; j < n; ++j)
+              if (fixed[j])
+                r[a] -= A(free[a], j) * u[j];
+            for (Index c = 0; c < m; ++c)
+              A_FF(a, c) = A(free[a], free[c]);
+          }
+        const Vector u_F = A_FF.ldlt().solve(r);
+        for (Index a = 0; a < m; ++a)
+          u[free[a]] = u_F[a];
+        const Vector lambda = A * u - b;
+        bool         feasible = true;
+        for (Index k = 0; k < n_c; ++k)
+          {
+            const double tolerance = 1e-12 * (1 + std::abs(lower[k]));
+            if (fixed[S[k]] ? lambda[S[k]] < -1e-12 :
+                              u[S[k]] < lower[k] - tolerance)
+              feasible = false;
+          }
+        if (feasible)
+          {
+            if (found == 0)
+              u_exact = u;
+            ++found;
+          }
+      }
+    return found;
+  }
+
+  inline double
+  relative_difference(const Vector &u, const Vector &v)
+  {
+    const double size = std::max(v.lpNorm<Eigen::Infinity>(), 1e-300);
+    return (u - v).lpNorm<Eigen::Infinity>() / size;
+  }
+
+  inline const char *
+  yes_no(const bool condition)
+  {
+    return condition ? "yes" : "NO";
+  }
+} // namespace test
