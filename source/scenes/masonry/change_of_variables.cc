@@ -115,7 +115,7 @@ namespace unilateral::masonry
       for (const Edge &edge : edges)
         if (!sets.unite(edge.a, edge.b))
           {
-            if (edge.b == ground)
+            if (sets.find(edge.a) == sets.find(ground))
               throw InputError(
                 "the unilateral constraints give " + describe(edge.a) +
                 " a second support (Dirichlet or Signorini, directly or "

@@ -50,7 +50,25 @@ namespace unilateral::masonry
     : parameters(parameters)
   {}
 
+  MasonryScene::MasonryScene(const Parameters &parameters,
+                             const Layout     &layout)
+    : parameters(parameters)
+    , custom_layout(std::make_unique<Layout>(layout))
+  {}
+
   MasonryScene::~MasonryScene() = default;
+
+  const ContactSet &
+  MasonryScene::contact_set() const
+  {
+    return state->contacts;
+  }
+
+  const ChangeOfVariables &
+  MasonryScene::change_of_variables() const
+  {
+    return *state->change;
+  }
 
   const lcp::Problem &
   MasonryScene::problem() const
@@ -70,8 +88,9 @@ namespace unilateral::masonry
   MasonryScene::make_grid()
   {
     state = std::make_unique<State>(parameters.geometry.element);
-    state->layout =
-      make_layout(parameters.geometry.bond, parameters.geometry.m);
+    state->layout = custom_layout ?
+                      *custom_layout :
+                      make_layout(parameters.geometry.bond, parameters.geometry.m);
     validate(state->layout);
     state->class_of_block =
       parameters.materials.classes_of_blocks(state->layout);
@@ -272,7 +291,7 @@ namespace unilateral::masonry
     const auto flags     = out.flags();
     const auto precision = out.precision();
     const Sizes &s       = problem_sizes;
-    out << "  masonry: " << to_string(parameters.geometry.bond)
+    out << "  masonry: " << state->layout.name
         << ", m = " << parameters.geometry.m << " (H = " << s.block_height
         << "), " << s.n_blocks << " blocks, "
         << to_string(parameters.geometry.element) << " on " << s.n_cells
@@ -298,7 +317,7 @@ namespace unilateral::masonry
     JsonObject summary =
       summary_base(context, "masonry", state->problem, report);
     const Sizes &s = problem_sizes;
-    summary.set("geometry", to_string(parameters.geometry.bond))
+    summary.set("geometry", state->layout.name)
       .set("m", parameters.geometry.m)
       .set("n_blocks", s.n_blocks)
       .set("refinement", parameters.geometry.refinement)

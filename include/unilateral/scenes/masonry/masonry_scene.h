@@ -1,6 +1,7 @@
 #pragma once
 
 #include <unilateral/scenes/masonry/change_of_variables.h>
+#include <unilateral/scenes/masonry/contact_detection.h>
 #include <unilateral/scenes/masonry/parameters.h>
 #include <unilateral/scenes/scene.h>
 
@@ -71,6 +72,13 @@ namespace unilateral::masonry
 
     explicit MasonryScene(const Parameters &parameters);
 
+    /**
+     * A wall made of the blocks of @p layout instead of the bond named in
+     * the parameters (which still give m for nothing, and everything else).
+     * The layout's course height plays the role of H.
+     */
+    MasonryScene(const Parameters &parameters, const Layout &layout);
+
     ~MasonryScene() override;
 
     lcp::Report
@@ -96,6 +104,14 @@ namespace unilateral::masonry
     {
       return problem_sizes;
     }
+
+    /// After set_up(): supports and joints as found on the mesh.
+    const ContactSet &
+    contact_set() const;
+
+    /// After set_up(): the change of variables to normal gaps.
+    const ChangeOfVariables &
+    change_of_variables() const;
 
     /// After run(): every constraint with its gap, force and state.
     const std::vector<ConstraintResult> &
@@ -142,6 +158,8 @@ namespace unilateral::masonry
     write_summary_file(const RunContext &context, const lcp::Report &report) const;
 
     Parameters parameters;
+    /// Set if the scene was given its own layout.
+    std::unique_ptr<Layout> custom_layout;
 
     /// Everything with deal.II types, so this header stays light.
     struct State;
