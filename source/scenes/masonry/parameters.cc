@@ -220,13 +220,19 @@ namespace unilateral::masonry
     for (const auto &[name, values] :
          {std::pair<std::string, std::size_t>{"Poisson's ratio", nu.size()},
           std::pair<std::string, std::size_t>{"Density", rho.size()}})
-      check_parameter(values == E.size(),
-                      materials_section,
-                      name,
-                      std::to_string(values) + " entries",
-                      "needs one entry per material class, as many as "
-                      "'Young's modulus' has (" +
-                        std::to_string(E.size()) + ")");
+      {
+        prm.enter_subsection("Materials");
+        const std::string text = prm.get(name);
+        prm.leave_subsection();
+        check_parameter(values == E.size(),
+                        materials_section,
+                        name,
+                        text,
+                        "has " + std::to_string(values) +
+                          " entries but 'Young's modulus' has " +
+                          std::to_string(E.size()) +
+                          "; give one entry per material class");
+      }
     classes.clear();
     for (std::size_t k = 0; k < E.size(); ++k)
       {
