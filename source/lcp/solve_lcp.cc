@@ -68,7 +68,8 @@ namespace unilateral::lcp
     {
       into.symbolic_analyses += from.symbolic_analyses;
       into.numeric_factorisations += from.numeric_factorisations;
-      into.factorisation_updates += from.factorisation_updates;
+      into.reused_factorisations += from.reused_factorisations;
+      into.cg_iterations += from.cg_iterations;
       into.triangular_solves += from.triangular_solves;
       into.matrix_vector_products += from.matrix_vector_products;
     }
@@ -233,6 +234,9 @@ namespace unilateral::lcp
             solution.u = schur->recover(reduced_solution.u);
           }
       }
+
+    // The factor refers to counters of this call: it must not outlive it.
+    solution.factor.reset();
 
     // The final check, always against the original problem.
     {

@@ -59,8 +59,14 @@ namespace unilateral
                               " on the Schur complement" :
                               "")
                         << std::endl;
+    lcp::SolverParameters parameters = context.solver;
+    if (parameters.pdas.start == lcp::SolverParameters::PdasStart::automatic)
+      parameters.pdas.start =
+        scene.auto_pdas_start_all_active() ?
+          lcp::SolverParameters::PdasStart::all_active :
+          lcp::SolverParameters::PdasStart::zero;
     return lcp::solve_lcp(problem,
-                          context.solver,
+                          parameters,
                           solution,
                           context.progress,
                           scene.auto_regularisation());
@@ -103,10 +109,21 @@ namespace unilateral
     for (const auto &[phase, seconds] : report.phase_times)
       solver_time.set(phase, seconds);
 
+    // How often each stage ran: tests check from these, not from times, that
+    // a stage a run does not need never ran.
+    JsonObject &calls = summary.object("calls");
+    if (context.timer != nullptr)
+      for (const auto &[section, n] :
+           context.timer->get_summary_data(dealii::TimerOutput::n_calls))
+        calls.set(section, static_cast<unsigned int>(n));
+    for (const auto &[phase, seconds] : report.phase_times)
+      calls.set("solver: " + phase, 1u);
+
     JsonObject &counters = summary.object("counters");
     counters.set("symbolic_analyses", report.counters.symbolic_analyses)
       .set("numeric_factorisations", report.counters.numeric_factorisations)
-      .set("factorisation_updates", report.counters.factorisation_updates)
+      .set("reused_factorisations", report.counters.reused_factorisations)
+      .set("cg_iterations", report.counters.cg_iterations)
       .set("triangular_solves", report.counters.triangular_solves)
       .set("matrix_vector_products", report.counters.matrix_vector_products);
     return summary;

@@ -3,6 +3,7 @@
 #include <unilateral/lcp/problem.h>
 
 #include <chrono>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,11 +25,14 @@ namespace unilateral::lcp
   /// Work counters: what ran, not how long it took (deterministic, testable).
   struct Counters
   {
-    unsigned int symbolic_analyses       = 0;
-    unsigned int numeric_factorisations  = 0;
-    unsigned int factorisation_updates   = 0; ///< low-rank updates instead
-    unsigned int triangular_solves       = 0; ///< one per right-hand side
-    unsigned int matrix_vector_products  = 0;
+    unsigned int symbolic_analyses      = 0;
+    unsigned int numeric_factorisations = 0;
+    /// Systems solved with the factor of a nearby matrix as preconditioner
+    /// instead of a new factorisation.
+    unsigned int reused_factorisations  = 0;
+    unsigned int cg_iterations          = 0;
+    unsigned int triangular_solves      = 0; ///< one per right-hand side
+    unsigned int matrix_vector_products = 0;
   };
 
   /**
@@ -95,10 +99,15 @@ namespace unilateral::lcp
    * the active set: indices of S where u sits at its bound, or (for
    * interior-point iterates) where the slack times A_ii is below lambda_i.
    */
+  struct ActiveSetFactor;
+
   struct Solution
   {
     Vector             u;
     Vector             lambda;
     std::vector<Index> active_set;
+    /// The last factorisation of an active-set method, handed to a
+    /// follow-up solve on a nearby matrix (the projection step).
+    std::shared_ptr<const ActiveSetFactor> factor;
   };
 } // namespace unilateral::lcp

@@ -42,14 +42,22 @@ namespace unilateral::lcp
       double tolerance = 0; ///< 0: n * machine epsilon
     } psor;
 
+    enum class PdasStart
+    {
+      automatic, ///< the scene's choice (zero when there is no scene)
+      zero,      ///< u0 = 0, as Ainsworth & Mihai
+      all_active ///< u0 minimises the energy with every bound active
+    };
+
     struct
     {
-      double tau = 1e-3;
+      double    tau   = 1e-3;
+      PdasStart start = PdasStart::automatic;
     } pdas;
 
     struct
     {
-      double initial_point   = 1e-4; ///< u0 = eps e, Sigma0 = -eps e
+      double initial_point   = 1e-2; ///< u0 = eps e, Sigma0 = -eps e
       double tolerance_gap   = 0;    ///< tol1; 0: n_c * machine epsilon
       double tolerance_residual = 0; ///< tol2; 0: n * sqrt(machine epsilon)
       bool   diagonal_scaling = true;

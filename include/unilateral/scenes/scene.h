@@ -65,6 +65,16 @@ namespace unilateral
     {
       return 0;
     }
+
+    /**
+     * What "Solver/PDAS/Start = auto" means for this scene: true for "all
+     * active" (structures in contact almost everywhere), false for u0 = 0.
+     */
+    virtual bool
+    auto_pdas_start_all_active() const
+    {
+      return false;
+    }
   };
 
   struct SceneInfo
@@ -132,7 +142,9 @@ namespace unilateral
   /**
    * The keys every summary.json has: scene, solver, n_unknowns,
    * n_constraints, n_active, iterations, converged, status, message, kkt,
-   * energy, time (per phase: the solver's and the context timer's), counters.
+   * energy, time (per phase: the solver's and the context timer's), calls
+   * (how often each stage ran; solver phases that ran count 1) and counters
+   * (the solver's work).
    * Scenes add their own keys and then call write_summary().
    */
   JsonObject

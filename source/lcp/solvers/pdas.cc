@@ -41,8 +41,25 @@ namespace unilateral::lcp
                 std::max(0.0, problem.lower_bound[k]);
           }
 
-        ActiveSetSystem   system(problem.A, report.counters);
+        // A factor from a previous stage (the regularised solve before the
+        // projection) preconditions the first systems.
+        ActiveSetSystem   system(problem.A, report.counters, solution.factor);
         std::vector<char> active(n, 0);
+        if (parameters.pdas.start == SolverParameters::PdasStart::all_active &&
+            solution.factor == nullptr)
+          {
+            // u0: the minimiser with every constraint at its bound.
+            active = problem.constrained_mask();
+            for (Index k = 0; k < problem.n_constrained(); ++k)
+              u[problem.constrained[k]] = problem.lower_bound[k];
+            if (!system.solve(active, problem.b, u))
+              {
+                report.status  = Status::singular;
+                report.message = "PDAS: the system with every constraint "
+                                 "active is singular";
+                return;
+              }
+          }
         const unsigned int limit = iteration_limit(500);
         for (unsigned int iteration = 0;; ++iteration)
           {
@@ -88,6 +105,7 @@ namespace unilateral::lcp
                 break;
               }
             report.iterations = iteration + 1;
+            solution.factor = system.factor();
             if (progress != nullptr)
               *progress << "    pdas iteration " << iteration + 1
                         << ": active set " << n_active << ", changed "
