@@ -25,7 +25,7 @@ namespace
     const std::string file = name + ".prm";
     std::ofstream(file) << text;
     std::vector<std::string> arguments = {"unilateral", file};
-    char *argv[] = {arguments[0].data(), arguments[1].data()};
+    char              *argv[] = {arguments[0].data(), arguments[1].data()};
     std::ostringstream out, err;
     const int          code = unilateral::run_application(2, argv, out, err);
     error                   = err.str();
@@ -113,12 +113,13 @@ main()
   bad_input("unknown geometry",
             masonry_prm("  set Geometry = herringbone bond\n"));
   bad_input("unknown solver",
-            masonry_prm("", "subsection Solver\n  set Method = simplex\nend\n"));
+            masonry_prm("",
+                        "subsection Solver\n  set Method = simplex\nend\n"));
   {
     std::vector<std::string> arguments = {"unilateral", "no_such_file.prm"};
-    char *argv[] = {arguments[0].data(), arguments[1].data()};
+    char              *argv[] = {arguments[0].data(), arguments[1].data()};
     std::ostringstream out, err;
-    const int code = unilateral::run_application(2, argv, out, err);
+    const int          code = unilateral::run_application(2, argv, out, err);
     std::cout << "missing parameter file: exit code " << code << ", "
               << err.str();
   }

@@ -24,17 +24,19 @@ using namespace masonry_test;
 namespace
 {
   std::vector<double>
-  energies(const std::string &geometry, const unsigned int m,
-           const std::string &element, const unsigned int r_max)
+  energies(const std::string &geometry,
+           const unsigned int m,
+           const std::string &element,
+           const unsigned int r_max)
   {
     std::vector<double> result;
     for (unsigned int r = 0; r <= r_max; ++r)
       {
-        const std::string prm = "subsection Masonry\n  set Geometry = " +
-                                geometry + "\n  set Blocks per side = " +
-                                std::to_string(m) + "\n  set Refinement = " +
-                                std::to_string(r) + "\n  set Element = " +
-                                element + "\nend\n";
+        const std::string prm =
+          "subsection Masonry\n  set Geometry = " + geometry +
+          "\n  set Blocks per side = " + std::to_string(m) +
+          "\n  set Refinement = " + std::to_string(r) +
+          "\n  set Element = " + element + "\nend\n";
         const Run run = masonry_test::run(parse(prm), "convergence");
         result.push_back(run.report.energy);
         if (run.report.kkt.max() > 1e-10)
@@ -57,20 +59,20 @@ main()
       // P2 on the same nodes reaches the asymptotic range one level later
       // (order 0.74 from r = 1..3, 0.96 from r = 2..4).
       const unsigned int        r_max = element == "P2" ? 4 : 3;
-      const std::vector<double> E = energies(geometry, 5, element, r_max);
-      bool decreasing = true;
+      const std::vector<double> E     = energies(geometry, 5, element, r_max);
+      bool                      decreasing = true;
       for (unsigned int r = 1; r < E.size(); ++r)
         decreasing = decreasing && E[r] < E[r - 1];
-      const double order = std::log2((E[r_max - 2] - E[r_max - 1]) /
-                                     (E[r_max - 1] - E[r_max]));
-      std::cout << geometry << ", m = 5, " << element << ", r = 0.."
-                << r_max << ": energy decreases with r: " << yes_no(decreasing)
+      const double order =
+        std::log2((E[r_max - 2] - E[r_max - 1]) / (E[r_max - 1] - E[r_max]));
+      std::cout << geometry << ", m = 5, " << element << ", r = 0.." << r_max
+                << ": energy decreases with r: " << yes_no(decreasing)
                 << ", observed order (last three levels) " << order
                 << ", within [0.75, 1.25] (expected 1): "
                 << yes_no(order >= 0.75 && order <= 1.25) << "\n";
     }
 
-  const std::vector<double> E = energies("stack bond", 4, "Q2", 3);
+  const std::vector<double> E        = energies("stack bond", 4, "Q2", 3);
   bool                      constant = true;
   for (const double e : E)
     constant = constant && std::abs(e - E[0]) < 1e-8 * std::abs(E[0]);

@@ -30,19 +30,19 @@ namespace
 {
   struct Case
   {
-    std::string geometry;
+    std::string  geometry;
     unsigned int m;
-    std::string element;
+    std::string  element;
     unsigned int refinement;
-    bool two_materials;
-    double top_traction_y;
+    bool         two_materials;
+    double       top_traction_y;
   };
 
   // The exact column, course by course.
   struct Column
   {
     std::vector<double> density, modulus; // per course: rho, lambda + 2 mu
-    double gravity, top_traction, H;
+    double              gravity, top_traction, H;
 
     double
     weight_above(const double y) const
@@ -127,20 +127,20 @@ namespace
               << ", KKT residuals <= 1e-10: "
               << yes_no(run.report.kkt.max() <= 1e-10) << "\n";
 
-    const auto  nodes = run.scene->nodal_displacements();
-    double      largest = 0, error = 0;
+    const auto nodes   = run.scene->nodal_displacements();
+    double     largest = 0, error = 0;
     for (const auto &node : nodes)
       {
         const double exact = column.u_y(node.position[1]);
         largest            = std::max(largest, std::abs(exact));
-        error = std::max({error,
-                          std::abs(node.displacement[0]),
-                          std::abs(node.displacement[1] - exact)});
+        error              = std::max({error,
+                                       std::abs(node.displacement[0]),
+                                       std::abs(node.displacement[1] - exact)});
       }
     std::cout << "  max |u - u_exact| / max |u_exact| < 1e-10: "
               << yes_no(error < 1e-10 * largest) << "\n";
 
-    double largest_gap = 0;
+    double                 largest_gap = 0;
     std::map<long, double> joint_force; // by joint height in units of H/2^r
     double                 base_force = 0;
     for (const auto &constraint : run.scene->constraint_results())
@@ -155,7 +155,7 @@ namespace
     std::cout << "  all normal gaps zero (< 1e-10 max |u|): "
               << yes_no(largest_gap < 1e-10 * largest) << "\n";
 
-    bool   forces_match = joint_force.size() == c.m - 1;
+    bool forces_match = joint_force.size() == c.m - 1;
     for (const auto &[level, force] : joint_force)
       {
         const double load = -column.sigma_yy(static_cast<double>(level) / c.m);
@@ -168,9 +168,8 @@ namespace
     // Each Signorini node carries the base pressure -sigma_yy(0) times its
     // Simpson weight: h/6 at a block corner, h/3 at a cell vertex inside the
     // block's base, 2h/3 at a face midpoint (the consistent nodal load).
-    const Layout layout =
-      make_layout(parse_bond(c.geometry), c.m);
-    const double h = (1.0 / c.m) / std::pow(2.0, c.refinement);
+    const Layout layout       = make_layout(parse_bond(c.geometry), c.m);
+    const double h            = (1.0 / c.m) / std::pow(2.0, c.refinement);
     bool         base_matches = true;
     unsigned int n_signorini  = 0;
     for (const auto &constraint : run.scene->constraint_results())
@@ -188,9 +187,8 @@ namespace
           else
             weight = h / 3;
           const double expected = -column.sigma_yy(0) * weight;
-          base_matches = base_matches &&
-                         std::abs(constraint.contact_force - expected) <
-                           1e-10 * expected;
+          base_matches = base_matches && std::abs(constraint.contact_force -
+                                                  expected) < 1e-10 * expected;
           ++n_signorini;
         }
     std::cout << "  each of the " << n_signorini
@@ -202,13 +200,13 @@ namespace
 int
 main()
 {
-  for (const Case &c : std::vector<Case>{
-         {"stack bond", 5, "Q2", 0, false, 0.0},
-         {"running bond", 5, "Q2", 0, false, 0.0},
-         {"laminae", 5, "Q2", 0, false, 0.0},
-         {"stack bond", 4, "P2", 0, false, 0.0},
-         {"running bond", 6, "P2", 0, true, -0.5},
-         {"laminae", 4, "Q2", 1, true, -0.5},
-         {"running bond", 3, "Q2", 2, true, 0.0}})
+  for (const Case &c :
+       std::vector<Case>{{"stack bond", 5, "Q2", 0, false, 0.0},
+                         {"running bond", 5, "Q2", 0, false, 0.0},
+                         {"laminae", 5, "Q2", 0, false, 0.0},
+                         {"stack bond", 4, "P2", 0, false, 0.0},
+                         {"running bond", 6, "P2", 0, true, -0.5},
+                         {"laminae", 4, "Q2", 1, true, -0.5},
+                         {"running bond", 3, "Q2", 2, true, 0.0}})
     check(c);
 }

@@ -39,15 +39,28 @@ namespace
     {75, {5625, 2850, 75}, {100686, 84092, 67498}, {33411, 25068, 11249}},
     {100, {10000, 5050, 100}, {179250, 149624, 119998}, {59550, 44675, 19999}},
     {125, {15625, 7875, 125}, {280311, 233905, 187498}, {93186, 69906, 31249}},
-    {150, {22500, 11325, 150}, {403875, 336936, 269998}, {134325, 100762, 44999}},
-    {175, {30625, 15400, 175}, {549936, 458717, 367498}, {182961, 137243, 61249}},
-    {200, {40000, 20100, 200}, {718500, 599249, 479998}, {239100, 179350, 79999}},
-    {225, {50625, 25425, 225}, {909561, 758530, 607498}, {302736, 227081, 101249}}};
+    {150,
+     {22500, 11325, 150},
+     {403875, 336936, 269998},
+     {134325, 100762, 44999}},
+    {175,
+     {30625, 15400, 175},
+     {549936, 458717, 367498},
+     {182961, 137243, 61249}},
+    {200,
+     {40000, 20100, 200},
+     {718500, 599249, 479998},
+     {239100, 179350, 79999}},
+    {225,
+     {50625, 25425, 225},
+     {909561, 758530, 607498},
+     {302736, 227081, 101249}}};
 
   const char *geometries[3] = {"stack bond", "running bond", "laminae"};
 
   std::string
-  prm_text(const std::string &geometry, const unsigned int m,
+  prm_text(const std::string &geometry,
+           const unsigned int m,
            const std::string &element = "Q2")
   {
     return "subsection Masonry\n  set Geometry = " + geometry +
@@ -65,14 +78,14 @@ namespace
         bool n_b_equal = true, n_c_as_predicted = true, n_as_predicted = true;
         for (const PaperRow &row : paper)
           {
-            const Sizes s = count(parse(prm_text(geometries[g], row.m)));
+            const Sizes s   = count(parse(prm_text(geometries[g], row.m)));
             const long  dn  = long(s.n_unknowns) - long(row.n[g]);
             const long  dnc = long(s.n_constraints) - long(row.n_c[g]);
-            std::cout << "  " << geometries[g] << ", m = " << row.m
-                      << ": n_b " << s.n_blocks << ", n " << s.n_unknowns
-                      << " (" << (dn >= 0 ? "+" : "") << dn << "), n_c "
-                      << s.n_constraints << " (" << (dnc >= 0 ? "+" : "")
-                      << dnc << ")\n";
+            std::cout << "  " << geometries[g] << ", m = " << row.m << ": n_b "
+                      << s.n_blocks << ", n " << s.n_unknowns << " ("
+                      << (dn >= 0 ? "+" : "") << dn << "), n_c "
+                      << s.n_constraints << " (" << (dnc >= 0 ? "+" : "") << dnc
+                      << ")\n";
             n_b_equal = n_b_equal && s.n_blocks == row.n_b[g];
             // Stack bond: equal at even m; at odd m the paper gives the
             // block straddling x = 0.5 to Gamma_D entirely: one Signorini
@@ -91,15 +104,15 @@ namespace
             n_c_as_predicted = n_c_as_predicted && dnc == expected_dnc;
             n_as_predicted   = n_as_predicted && dn == expected_dn;
           }
-        std::cout << "  " << geometries[g] << ": n_b = Table 1 at every m: "
-                  << yes_no(n_b_equal) << "\n";
+        std::cout << "  " << geometries[g]
+                  << ": n_b = Table 1 at every m: " << yes_no(n_b_equal)
+                  << "\n";
         if (g == 0)
           std::cout << "  stack bond: n and n_c = Table 2 at every even m, "
                        "both +1 at odd m (straddling block): "
                     << yes_no(n_c_as_predicted && n_as_predicted) << "\n";
         else
-          std::cout << "  " << geometries[g]
-                    << ": n_c = Table 2 at every m: "
+          std::cout << "  " << geometries[g] << ": n_c = Table 2 at every m: "
                     << yes_no(n_c_as_predicted) << "; n = Table 2 - "
                     << (g == 1 ? "floor((m-1)/2)" : "(m-1)")
                     << " at every m: " << yes_no(n_as_predicted) << "\n";
@@ -120,7 +133,7 @@ namespace
 
     std::mt19937                           random(42);
     std::uniform_real_distribution<double> uniform(-1, 1);
-    std::vector<double> new_variables(change.n_unknowns());
+    std::vector<double>                    new_variables(change.n_unknowns());
     for (double &v : new_variables)
       v = uniform(random);
     const std::vector<double> u = change.to_physical(new_variables.data());
@@ -130,13 +143,13 @@ namespace
     for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
       {
         const UnilateralConstraint &c = contacts.constraints[k];
-        const double value = c.kind == ConstraintKind::signorini ?
-                               u[c.lower] :
-                               u[c.upper] - u[c.lower];
-        const int v = change.variable_of_constraint(k);
-        rows_match  = rows_match && std::abs(value - new_variables[v]) < 1e-13;
-        rows_match  = rows_match && !owned[v]; // owners are distinct
-        owned[v]    = 1;
+        const double value            = c.kind == ConstraintKind::signorini ?
+                                          u[c.lower] :
+                                          u[c.upper] - u[c.lower];
+        const int    v                = change.variable_of_constraint(k);
+        rows_match = rows_match && std::abs(value - new_variables[v]) < 1e-13;
+        rows_match = rows_match && !owned[v]; // owners are distinct
+        owned[v]   = 1;
       }
     bool others_match = true;
     for (DofIndex i = 0; i < u.size(); ++i)
@@ -151,8 +164,7 @@ namespace
               << " (longest expansion " << s.max_expansion_length
               << " terms): C u~ = u~ on all " << s.n_constraints
               << " constraint rows: " << yes_no(rows_match)
-              << "; Dirichlet and free DOFs: " << yes_no(others_match)
-              << "\n";
+              << "; Dirichlet and free DOFs: " << yes_no(others_match) << "\n";
   }
 
   void
@@ -197,9 +209,7 @@ namespace
     });
 
     // Dependent rows, on a bare graph of 3 DOFs.
-    auto describe = [](const DofIndex i) {
-      return "DOF " + std::to_string(i);
-    };
+    auto describe = [](const DofIndex i) { return "DOF " + std::to_string(i); };
     const std::vector<char> none(3, 0);
     expect_error("a cycle of joints", [&]() {
       ChangeOfVariables(3,

@@ -93,7 +93,7 @@ main()
   for (const std::string geometry : {"stack bond", "running bond", "laminae"})
     for (const unsigned int m : {5u, 10u, 20u})
       {
-        const Run reference = solve_with(geometry, m, {"pdas", false});
+        const Run  reference   = solve_with(geometry, m, {"pdas", false});
         const auto reference_u = reference.scene->nodal_displacements();
         double     scale       = 0;
         for (const auto &node : reference_u)
@@ -109,8 +109,8 @@ main()
         for (const auto &c : reference.scene->constraint_results())
           n_degenerate += std::abs(c.normal_gap) <= 1e-10 * scale &&
                           std::abs(c.contact_force) <= 1e-10 * force_scale;
-        std::cout << geometry << ", m = " << m << " (n = "
-                  << reference.scene->sizes().n_unknowns
+        std::cout << geometry << ", m = " << m
+                  << " (n = " << reference.scene->sizes().n_unknowns
                   << ", n_c = " << reference.scene->sizes().n_constraints
                   << ", " << n_degenerate << " degenerate contacts):\n"
                   << "  pdas: " << lcp::to_string(reference.report.status)
@@ -126,15 +126,14 @@ main()
                           << "\n";
                 continue;
               }
-            const Run  result = solve_with(geometry, m, method);
-            const auto u      = result.scene->nodal_displacements();
+            const Run  result     = solve_with(geometry, m, method);
+            const auto u          = result.scene->nodal_displacements();
             double     difference = 0;
             for (std::size_t i = 0; i < u.size(); ++i)
               for (unsigned int d = 0; d < 2; ++d)
-                difference =
-                  std::max(difference,
-                           std::abs(u[i].displacement[d] -
-                                    reference_u[i].displacement[d]));
+                difference = std::max(difference,
+                                      std::abs(u[i].displacement[d] -
+                                               reference_u[i].displacement[d]));
             const double energy_difference =
               std::abs(result.report.energy - reference.report.energy);
             std::cout << "  " << label(method) << ": "

@@ -54,7 +54,7 @@ namespace masonry_test
     dealii::TimerOutput timer(quiet,
                               dealii::TimerOutput::never,
                               dealii::TimerOutput::wall_times);
-    RunContext context;
+    RunContext          context;
     context.run_name         = name;
     context.output_directory = std::filesystem::path("results") / name;
     std::filesystem::create_directories(context.output_directory);

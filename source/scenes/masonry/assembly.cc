@@ -13,10 +13,10 @@ namespace unilateral::masonry
     // its physical DOFs, sorted. Stored for all cells (CSR), since both the
     // sparsity pattern and the assembly walk them.
     void
-    collect_cell_variables(const dealii::DoFHandler<2>  &dof_handler,
-                           const ChangeOfVariables      &change,
-                           std::vector<std::size_t>     &start,
-                           std::vector<int>             &variables)
+    collect_cell_variables(const dealii::DoFHandler<2> &dof_handler,
+                           const ChangeOfVariables     &change,
+                           std::vector<std::size_t>    &start,
+                           std::vector<int>            &variables)
     {
       const unsigned int dofs_per_cell = dof_handler.get_fe().n_dofs_per_cell();
       const auto n_cells = dof_handler.get_triangulation().n_active_cells();
@@ -51,11 +51,12 @@ namespace unilateral::masonry
                  const std::vector<int>         &cell_variables,
                  lcp::SparseMatrix              &A)
     {
-      const std::size_t n_cells = cell_start.size() - 1;
+      const std::size_t        n_cells = cell_start.size() - 1;
       std::vector<std::size_t> cells_start(n + 1, 0);
       for (const int v : cell_variables)
         ++cells_start[v + 1];
-      std::partial_sum(cells_start.begin(), cells_start.end(),
+      std::partial_sum(cells_start.begin(),
+                       cells_start.end(),
                        cells_start.begin());
       std::vector<unsigned int> cells_of(cells_start.back());
       {
@@ -106,10 +107,10 @@ namespace unilateral::masonry
                const ContactSet        &contacts,
                const LoadData          &loads)
   {
-    const dealii::DoFHandler<2>     &dof_handler = discretisation.dof_handler;
-    const dealii::FiniteElement<2>  &fe          = *discretisation.fe;
-    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
-    const int                        n = static_cast<int>(change.n_unknowns());
+    const dealii::DoFHandler<2>    &dof_handler   = discretisation.dof_handler;
+    const dealii::FiniteElement<2> &fe            = *discretisation.fe;
+    const unsigned int              dofs_per_cell = fe.n_dofs_per_cell();
+    const int                       n = static_cast<int>(change.n_unknowns());
 
     lcp::Problem problem;
     problem.b = lcp::Vector::Zero(n);
@@ -119,7 +120,7 @@ namespace unilateral::masonry
     collect_cell_variables(dof_handler, change, cell_start, cell_variables);
     make_pattern(n, cell_start, cell_variables, problem.A);
 
-    dealii::FEValues<2> fe_values(*discretisation.mapping,
+    dealii::FEValues<2>     fe_values(*discretisation.mapping,
                                   fe,
                                   *discretisation.quadrature,
                                   dealii::update_values |
@@ -130,8 +131,8 @@ namespace unilateral::masonry
                                            *discretisation.face_quadrature,
                                            dealii::update_values |
                                              dealii::update_JxW_values);
-    const unsigned int n_q_points = discretisation.quadrature->size();
-    const bool         loaded_top =
+    const unsigned int      n_q_points = discretisation.quadrature->size();
+    const bool              loaded_top =
       loads.top_traction[0] != 0 || loads.top_traction[1] != 0;
 
     std::vector<unsigned int> component(dofs_per_cell);
@@ -161,8 +162,8 @@ namespace unilateral::masonry
         cell->get_dof_indices(dofs);
         const MaterialClass &material =
           loads.classes[loads.class_of_block[cell->material_id()]];
-        const double lambda = material.lambda();
-        const double mu     = material.mu();
+        const double lambda       = material.lambda();
+        const double mu           = material.mu();
         const double body_force_y = -material.density * loads.gravity;
 
         // Plane strain elasticity, as in step-8.
@@ -173,25 +174,27 @@ namespace unilateral::masonry
             const double JxW = fe_values.JxW(q);
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               {
-                const unsigned int            ci = component[i];
-                const dealii::Tensor<1, 2>   &gi = fe_values.shape_grad(i, q);
+                const unsigned int          ci = component[i];
+                const dealii::Tensor<1, 2> &gi = fe_values.shape_grad(i, q);
                 for (unsigned int j = i; j < dofs_per_cell; ++j)
                   {
                     const unsigned int          cj = component[j];
                     const dealii::Tensor<1, 2> &gj = fe_values.shape_grad(j, q);
-                    double value = gi[ci] * gj[cj] * lambda +
-                                   gi[cj] * gj[ci] * mu;
+                    double                      value =
+                      gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
                     if (ci == cj)
                       value += (gi * gj) * mu;
                     cell_matrix[i * dofs_per_cell + j] += value * JxW;
                   }
                 if (ci == 1)
-                  cell_rhs[i] += fe_values.shape_value(i, q) * body_force_y * JxW;
+                  cell_rhs[i] +=
+                    fe_values.shape_value(i, q) * body_force_y * JxW;
               }
           }
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j < i; ++j)
-            cell_matrix[i * dofs_per_cell + j] = cell_matrix[j * dofs_per_cell + i];
+            cell_matrix[i * dofs_per_cell + j] =
+              cell_matrix[j * dofs_per_cell + i];
 
         if (loaded_top)
           for (const unsigned int f : cell->face_indices())
@@ -211,15 +214,15 @@ namespace unilateral::masonry
 
         // Expand into the new variables: u_i = sum_t c_t u~_{v_t}, so the
         // local contribution to A~ is sum_ij K_ij c_a c_b at (v_a, v_b).
-        const std::size_t  first = cell_start[cell->active_cell_index()];
-        const std::size_t  last  = cell_start[cell->active_cell_index() + 1];
+        const std::size_t  first   = cell_start[cell->active_cell_index()];
+        const std::size_t  last    = cell_start[cell->active_cell_index() + 1];
         const unsigned int n_local = static_cast<unsigned int>(last - first);
         for (std::size_t k = first; k < last; ++k)
           position[cell_variables[k]] = static_cast<int>(k - first);
         local_terms.clear();
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
-            term_start[i] = local_terms.size();
+            term_start[i]           = local_terms.size();
             const auto [begin, end] = change.expansion(dofs[i]);
             for (auto term = begin; term != end; ++term)
               local_terms.push_back(

@@ -28,8 +28,8 @@ namespace unilateral::masonry
     {
     public:
       explicit DisjointSets(const std::size_t n)
-        : parent(n)
-        , size(n, 1)
+          : parent(n)
+          , size(n, 1)
       {
         std::iota(parent.begin(), parent.end(), std::size_t(0));
       }
@@ -80,10 +80,10 @@ namespace unilateral::masonry
   } // namespace
 
   ChangeOfVariables::ChangeOfVariables(
-    const DofIndex                               n_dofs,
-    const std::vector<char>                     &dirichlet,
-    const std::vector<UnilateralConstraint>     &constraints,
-    const std::function<std::string(DofIndex)>  &describe)
+    const DofIndex                              n_dofs,
+    const std::vector<char>                    &dirichlet,
+    const std::vector<UnilateralConstraint>    &constraints,
+    const std::function<std::string(DofIndex)> &describe)
   {
     const std::size_t ground = n_dofs;
 
@@ -101,8 +101,8 @@ namespace unilateral::masonry
         else
           {
             if (c.lower == c.upper)
-              throw InputError("a " + to_string(c.kind) +
-                               " constraint at " + describe(c.lower) +
+              throw InputError("a " + to_string(c.kind) + " constraint at " +
+                               describe(c.lower) +
                                " couples a DOF with itself");
             edges.push_back({c.lower, c.upper, EdgeKind::joint});
           }
@@ -151,7 +151,7 @@ namespace unilateral::masonry
     // Orient every tree from its root by breadth-first search; the child of
     // each edge owns it. Ground first, so Dirichlet and Signorini DOFs are
     // owned by their own support edge.
-    constexpr std::size_t none = static_cast<std::size_t>(-1);
+    constexpr std::size_t    none = static_cast<std::size_t>(-1);
     std::vector<std::size_t> parent_edge(n_dofs + 1, none);
     std::vector<char>        visited(n_dofs + 1, 0);
     std::vector<std::size_t> order; // visiting order: parents before children
@@ -217,15 +217,15 @@ namespace unilateral::masonry
       {
         if (v == ground || length[v] == 0)
           continue;
-        Term              *out = terms.data() + term_start[v];
-        const std::size_t  e   = parent_edge[v];
+        Term             *out = terms.data() + term_start[v];
+        const std::size_t e   = parent_edge[v];
         if (e == none || edges[e].kind == EdgeKind::signorini)
           out[0] = {variable[v], 1.0};
         else
           {
             const bool        child_is_upper = edges[e].b == v;
             const std::size_t p = child_is_upper ? edges[e].a : edges[e].b;
-            out[0] = {variable[v], child_is_upper ? 1.0 : -1.0};
+            out[0]              = {variable[v], child_is_upper ? 1.0 : -1.0};
             std::copy(terms.begin() + term_start[p],
                       terms.begin() + term_start[p + 1],
                       out + 1);

@@ -33,9 +33,9 @@ namespace unilateral::masonry
     struct FaceRecord
     {
       unsigned int block;
-      unsigned int axis; ///< 0: vertical face (normal +-x), 1: horizontal
-      int          sign; ///< outward normal is sign * e_axis
-      double       line; ///< the coordinate along the normal
+      unsigned int axis;   ///< 0: vertical face (normal +-x), 1: horizontal
+      int          sign;   ///< outward normal is sign * e_axis
+      double       line;   ///< the coordinate along the normal
       double       t0, t1; ///< the extent along the tangent, t0 < t1
       std::array<std::array<DofIndex, 2>, 3> node_dofs; ///< [node][component]
       std::array<double, 3>                  node_t;    ///< tangent coordinate
@@ -65,16 +65,16 @@ namespace unilateral::masonry
       for (unsigned int i = 0; i < 6; ++i)
         face_node[i] = fe.face_system_to_component_index(i);
 
-      std::vector<FaceRecord>                 faces;
+      std::vector<FaceRecord>                      faces;
       std::vector<dealii::types::global_dof_index> face_dofs(6);
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           {
             if (!cell->face(f)->at_boundary())
               continue;
-            const auto            face = cell->face(f);
-            const dealii::Point<2> a   = face->vertex(0);
-            const dealii::Point<2> b   = face->vertex(1);
+            const auto             face = cell->face(f);
+            const dealii::Point<2> a    = face->vertex(0);
+            const dealii::Point<2> b    = face->vertex(1);
             FaceRecord             record;
             record.block = cell->material_id();
             if (std::abs(a[0] - b[0]) <= tolerance)
@@ -85,18 +85,18 @@ namespace unilateral::masonry
               {
                 std::ostringstream message;
                 message << "block " << record.block
-                        << " has a boundary face from (" << a[0] << ", "
-                        << a[1] << ") to (" << b[0] << ", " << b[1]
+                        << " has a boundary face from (" << a[0] << ", " << a[1]
+                        << ") to (" << b[0] << ", " << b[1]
                         << ") that is not parallel to an axis; masonry "
                            "blocks must be axis-aligned rectangles";
                 throw InputError(message.str());
               }
             const unsigned int axis    = record.axis;
             const unsigned int tangent = 1 - axis;
-            record.line = 0.5 * (a[axis] + b[axis]);
-            record.sign = record.line > cell->center()[axis] ? 1 : -1;
-            record.t0   = std::min(a[tangent], b[tangent]);
-            record.t1   = std::max(a[tangent], b[tangent]);
+            record.line                = 0.5 * (a[axis] + b[axis]);
+            record.sign   = record.line > cell->center()[axis] ? 1 : -1;
+            record.t0     = std::min(a[tangent], b[tangent]);
+            record.t1     = std::max(a[tangent], b[tangent]);
             record.node_t = {
               {a[tangent], b[tangent], 0.5 * (a[tangent] + b[tangent])}};
             face->get_dof_indices(face_dofs);
@@ -155,12 +155,12 @@ namespace unilateral::masonry
       {
         if (face.block >= extent.size())
           extent.resize(face.block + 1);
-        const double x_lo = face.axis == 0 ? face.line : face.t0;
-        const double x_hi = face.axis == 0 ? face.line : face.t1;
+        const double x_lo     = face.axis == 0 ? face.line : face.t0;
+        const double x_hi     = face.axis == 0 ? face.line : face.t1;
         extent[face.block].x0 = std::min(extent[face.block].x0, x_lo);
         extent[face.block].x1 = std::max(extent[face.block].x1, x_hi);
-        x_min = std::min(x_min, x_lo);
-        x_max = std::max(x_max, x_hi);
+        x_min                 = std::min(x_min, x_lo);
+        x_max                 = std::max(x_max, x_hi);
         y_min = std::min(y_min, face.axis == 1 ? face.line : face.t0);
       }
     const double x_split = x_min + signorini_fraction * (x_max - x_min);
@@ -181,8 +181,8 @@ namespace unilateral::masonry
         if (base)
           for (unsigned int k = 0; k < 3; ++k)
             {
-              const double x         = face.node_t[k];
-              const bool   on_split  = std::abs(x - x_split) <= tolerance;
+              const double x        = face.node_t[k];
+              const bool   on_split = std::abs(x - x_split) <= tolerance;
               const bool   block_ends_there =
                 extent[face.block].x1 <= x_split + tolerance;
               const DofIndex dof = face.node_dofs[k][1];
@@ -205,22 +205,20 @@ namespace unilateral::masonry
         if (faces[f].axis == 1 && faces[f].sign < 0)
           for (unsigned int k = 0; k < 3; ++k)
             if (signorini[faces[f].node_dofs[k][1]])
-              base_nodes.emplace_back(faces[f].node_dofs[k][1],
-                                      f * 3 + k);
+              base_nodes.emplace_back(faces[f].node_dofs[k][1], f * 3 + k);
       std::sort(base_nodes.begin(), base_nodes.end());
       for (std::size_t i = 0; i < base_nodes.size(); ++i)
         {
           if (i > 0 && base_nodes[i].first == base_nodes[i - 1].first)
             continue;
-          const FaceRecord &face = faces[base_nodes[i].second / 3];
-          const unsigned int k   = base_nodes[i].second % 3;
+          const FaceRecord  &face = faces[base_nodes[i].second / 3];
+          const unsigned int k    = base_nodes[i].second % 3;
           result.constraints.push_back(
             {ConstraintKind::signorini, base_nodes[i].first, 0, -gap});
           result.position.push_back(point_on(face, face.node_t[k]));
           result.blocks.push_back({{face.block, face.block}});
         }
-      result.n_signorini =
-        static_cast<unsigned int>(result.constraints.size());
+      result.n_signorini = static_cast<unsigned int>(result.constraints.size());
     }
 
     // Joints: group the faces by line (sorting, so no quadratic search),
@@ -243,43 +241,43 @@ namespace unilateral::masonry
       std::array<double, 2> position;
       unsigned int          lower_block, upper_block;
     };
-    std::vector<JointPair> pairs;
+    std::vector<JointPair>   pairs;
     std::vector<std::size_t> plus, minus;
 
-    auto match_nodes = [&](FaceRecord &p, FaceRecord &q, const double lo,
-                           const double hi) {
-      // Every node of either face inside the common segment needs a
-      // coincident partner on the other face.
-      for (unsigned int k = 0; k < 3; ++k)
-        if (q.node_t[k] >= lo - tolerance && q.node_t[k] <= hi + tolerance)
+    auto match_nodes =
+      [&](FaceRecord &p, FaceRecord &q, const double lo, const double hi) {
+        // Every node of either face inside the common segment needs a
+        // coincident partner on the other face.
+        for (unsigned int k = 0; k < 3; ++k)
+          if (q.node_t[k] >= lo - tolerance && q.node_t[k] <= hi + tolerance)
+            {
+              bool found = false;
+              for (unsigned int l = 0; l < 3; ++l)
+                found |= std::abs(p.node_t[l] - q.node_t[k]) <= tolerance;
+              if (!found)
+                throw_non_matching(q, q.node_t[k], p, tolerance);
+            }
+        for (unsigned int k = 0; k < 3; ++k)
           {
-            bool found = false;
+            if (p.node_t[k] < lo - tolerance || p.node_t[k] > hi + tolerance)
+              continue;
+            int partner = -1;
             for (unsigned int l = 0; l < 3; ++l)
-              found |= std::abs(p.node_t[l] - q.node_t[k]) <= tolerance;
-            if (!found)
-              throw_non_matching(q, q.node_t[k], p, tolerance);
+              if (std::abs(p.node_t[k] - q.node_t[l]) <= tolerance)
+                partner = static_cast<int>(l);
+            if (partner < 0)
+              throw_non_matching(p, p.node_t[k], q, tolerance);
+            pairs.push_back({p.node_dofs[k][p.axis],
+                             q.node_dofs[partner][p.axis],
+                             p.axis == 1 ? ConstraintKind::horizontal_joint :
+                                           ConstraintKind::vertical_joint,
+                             point_on(p, p.node_t[k]),
+                             p.block,
+                             q.block});
           }
-      for (unsigned int k = 0; k < 3; ++k)
-        {
-          if (p.node_t[k] < lo - tolerance || p.node_t[k] > hi + tolerance)
-            continue;
-          int partner = -1;
-          for (unsigned int l = 0; l < 3; ++l)
-            if (std::abs(p.node_t[k] - q.node_t[l]) <= tolerance)
-              partner = static_cast<int>(l);
-          if (partner < 0)
-            throw_non_matching(p, p.node_t[k], q, tolerance);
-          pairs.push_back({p.node_dofs[k][p.axis],
-                           q.node_dofs[partner][p.axis],
-                           p.axis == 1 ? ConstraintKind::horizontal_joint :
-                                         ConstraintKind::vertical_joint,
-                           point_on(p, p.node_t[k]),
-                           p.block,
-                           q.block});
-        }
-      p.contact = true;
-      q.contact = true;
-    };
+        p.contact = true;
+        q.contact = true;
+      };
 
     for (std::size_t begin = 0; begin < order.size();)
       {
@@ -319,7 +317,8 @@ namespace unilateral::masonry
 
     // A node pair found from two face pairs (at a common face end) counts
     // once.
-    std::sort(pairs.begin(), pairs.end(),
+    std::sort(pairs.begin(),
+              pairs.end(),
               [](const JointPair &a, const JointPair &b) {
                 return a.lower != b.lower ? a.lower < b.lower :
                                             a.upper < b.upper;

@@ -10,7 +10,7 @@
 namespace unilateral::masonry
 {
   Discretisation::Discretisation(const ElementType element)
-    : element(element)
+      : element(element)
   {
     if (element == ElementType::q2)
       {
@@ -22,11 +22,11 @@ namespace unilateral::masonry
       }
     else
       {
-        fe = std::make_unique<dealii::FESystem<2>>(dealii::FE_SimplexP<2>(2),
-                                                   2);
-        scalar_fe  = std::make_unique<dealii::FE_SimplexP<2>>(2);
-        mapping    = std::make_unique<dealii::MappingFE<2>>(
-          dealii::FE_SimplexP<2>(1));
+        fe =
+          std::make_unique<dealii::FESystem<2>>(dealii::FE_SimplexP<2>(2), 2);
+        scalar_fe = std::make_unique<dealii::FE_SimplexP<2>>(2);
+        mapping =
+          std::make_unique<dealii::MappingFE<2>>(dealii::FE_SimplexP<2>(1));
         // Exact for the degree-2 integrands of the stiffness matrix and the
         // body force.
         quadrature = std::make_unique<dealii::QGaussSimplex<2>>(3);

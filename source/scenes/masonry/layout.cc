@@ -202,7 +202,9 @@ namespace unilateral::masonry
       static_cast<std::size_t>(std::max(1.0, std::ceil(height / bucket)));
     const double touch = 1e-10 * smallest;
 
-    auto range = [&](const double a, const double b, const double origin,
+    auto range = [&](const double      a,
+                     const double      b,
+                     const double      origin,
                      const std::size_t n) {
       auto clamp = [n](const double v) {
         return static_cast<std::size_t>(

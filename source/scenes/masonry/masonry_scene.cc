@@ -47,14 +47,15 @@ namespace unilateral::masonry
   }
 
   MasonryScene::MasonryScene(const Parameters &parameters)
-    : parameters(parameters)
-  {}
+      : parameters(parameters)
+  {
+  }
 
-  MasonryScene::MasonryScene(const Parameters &parameters,
-                             const Layout     &layout)
-    : parameters(parameters)
-    , custom_layout(std::make_unique<Layout>(layout))
-  {}
+  MasonryScene::MasonryScene(const Parameters &parameters, const Layout &layout)
+      : parameters(parameters)
+      , custom_layout(std::make_unique<Layout>(layout))
+  {
+  }
 
   MasonryScene::~MasonryScene() = default;
 
@@ -87,10 +88,10 @@ namespace unilateral::masonry
   void
   MasonryScene::make_grid()
   {
-    state = std::make_unique<State>(parameters.geometry.element);
-    state->layout = custom_layout ?
-                      *custom_layout :
-                      make_layout(parameters.geometry.bond, parameters.geometry.m);
+    state         = std::make_unique<State>(parameters.geometry.element);
+    state->layout = custom_layout ? *custom_layout :
+                                    make_layout(parameters.geometry.bond,
+                                                parameters.geometry.m);
     validate(state->layout);
     state->class_of_block =
       parameters.materials.classes_of_blocks(state->layout);
@@ -102,10 +103,10 @@ namespace unilateral::masonry
                         parameters.geometry.element,
                         state->discretisation.triangulation);
 
-    problem_sizes              = Sizes();
-    problem_sizes.n_blocks     = static_cast<unsigned int>(
-      state->layout.blocks.size());
-    problem_sizes.n_cells      =
+    problem_sizes = Sizes();
+    problem_sizes.n_blocks =
+      static_cast<unsigned int>(state->layout.blocks.size());
+    problem_sizes.n_cells =
       state->discretisation.triangulation.n_active_cells();
     problem_sizes.block_height = H;
     problem_sizes.cell_size    = h;
@@ -144,16 +145,15 @@ namespace unilateral::masonry
       // Coincidence tolerance: far above round-off in the coordinates, far
       // below the node spacing h/2.
       const double tolerance = 1e-8 * problem_sizes.cell_size;
-      state->contacts =
-        detect_contacts(state->discretisation.dof_handler,
-                        parameters.boundary.signorini_fraction,
-                        problem_sizes.gap,
-                        tolerance);
+      state->contacts = detect_contacts(state->discretisation.dof_handler,
+                                        parameters.boundary.signorini_fraction,
+                                        problem_sizes.gap,
+                                        tolerance);
     }
     {
       const auto        timer    = section(context, "change of variables");
       const ContactSet &contacts = state->contacts;
-      auto describe = [&contacts](const DofIndex dof) {
+      auto              describe = [&contacts](const DofIndex dof) {
         for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
           if (contacts.constraints[k].lower == dof ||
               (contacts.constraints[k].kind != ConstraintKind::signorini &&
@@ -162,15 +162,14 @@ namespace unilateral::masonry
                    describe_point(contacts.position[k][0],
                                   contacts.position[k][1],
                                   contacts.constraints[k].lower == dof ?
-                                    contacts.blocks[k][0] :
-                                    contacts.blocks[k][1]);
+                                                 contacts.blocks[k][0] :
+                                                 contacts.blocks[k][1]);
         return "DOF " + std::to_string(dof);
       };
-      state->change =
-        std::make_unique<ChangeOfVariables>(problem_sizes.n_dofs,
-                                            contacts.dirichlet,
-                                            contacts.constraints,
-                                            describe);
+      state->change = std::make_unique<ChangeOfVariables>(problem_sizes.n_dofs,
+                                                          contacts.dirichlet,
+                                                          contacts.constraints,
+                                                          describe);
     }
     const ContactSet &contacts         = state->contacts;
     problem_sizes.n_dirichlet          = contacts.n_dirichlet;
@@ -225,7 +224,7 @@ namespace unilateral::masonry
     n_closed_contacts = 0;
     for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
       {
-        const int v = state->change->variable_of_constraint(k);
+        const int v    = state->change->variable_of_constraint(k);
         constraints[k] = {contacts.constraints[k].kind,
                           contacts.position[k],
                           contacts.blocks[k],
@@ -236,19 +235,21 @@ namespace unilateral::masonry
       }
 
     // Largest nodal displacement: pair the two components of each node.
-    const dealii::DoFHandler<2>    &dof_handler = state->discretisation.dof_handler;
-    const dealii::FiniteElement<2> &fe          = dof_handler.get_fe();
+    const dealii::DoFHandler<2> &dof_handler =
+      state->discretisation.dof_handler;
+    const dealii::FiniteElement<2> &fe  = dof_handler.get_fe();
     const unsigned int n_nodes_per_cell = fe.base_element(0).n_dofs_per_cell();
     std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    double largest = 0;
+    double                                       largest = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         cell->get_dof_indices(dofs);
         for (unsigned int k = 0; k < n_nodes_per_cell; ++k)
           largest = std::max(
             largest,
-            std::hypot(state->displacement[dofs[fe.component_to_system_index(0, k)]],
-                       state->displacement[dofs[fe.component_to_system_index(1, k)]]));
+            std::hypot(
+              state->displacement[dofs[fe.component_to_system_index(0, k)]],
+              state->displacement[dofs[fe.component_to_system_index(1, k)]]));
       }
     max_displacement = largest;
   }
@@ -256,14 +257,15 @@ namespace unilateral::masonry
   std::vector<NodalDisplacement>
   MasonryScene::nodal_displacements() const
   {
-    const dealii::DoFHandler<2>    &dof_handler = state->discretisation.dof_handler;
-    const dealii::FiniteElement<2> &fe          = dof_handler.get_fe();
-    const dealii::Mapping<2>       &mapping     = *state->discretisation.mapping;
-    const auto        &unit_points      = fe.base_element(0).get_unit_support_points();
+    const dealii::DoFHandler<2> &dof_handler =
+      state->discretisation.dof_handler;
+    const dealii::FiniteElement<2> &fe      = dof_handler.get_fe();
+    const dealii::Mapping<2>       &mapping = *state->discretisation.mapping;
+    const auto &unit_points = fe.base_element(0).get_unit_support_points();
     const unsigned int n_nodes_per_cell = unit_points.size();
     std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<char>              seen(dof_handler.n_dofs(), 0);
-    std::vector<NodalDisplacement> result;
+    std::vector<char>                            seen(dof_handler.n_dofs(), 0);
+    std::vector<NodalDisplacement>               result;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         cell->get_dof_indices(dofs);
@@ -276,21 +278,22 @@ namespace unilateral::masonry
             seen[dof_x] = 1;
             const dealii::Point<2> p =
               mapping.transform_unit_to_real_cell(cell, unit_points[k]);
-            result.push_back({{{p[0], p[1]}},
-                              cell->material_id(),
-                              {{state->displacement[dof_x],
-                                state->displacement[dof_y]}}});
+            result.push_back(
+              {{{p[0], p[1]}},
+               cell->material_id(),
+               {{state->displacement[dof_x], state->displacement[dof_y]}}});
           }
       }
     return result;
   }
 
   void
-  MasonryScene::print_summary(std::ostream &out, const lcp::Report &report) const
+  MasonryScene::print_summary(std::ostream      &out,
+                              const lcp::Report &report) const
   {
-    const auto flags     = out.flags();
-    const auto precision = out.precision();
-    const Sizes &s       = problem_sizes;
+    const auto   flags     = out.flags();
+    const auto   precision = out.precision();
+    const Sizes &s         = problem_sizes;
     out << "  masonry: " << state->layout.name
         << ", m = " << parameters.geometry.m << " (H = " << s.block_height
         << "), " << s.n_blocks << " blocks, "
@@ -302,10 +305,9 @@ namespace unilateral::masonry
         << "; joints: " << s.n_horizontal_joint << " horizontal + "
         << s.n_vertical_joint << " vertical node pairs\n";
     print_solver_summary(out, state->problem, report);
-    out << std::scientific << std::setprecision(6)
-        << "  max displacement " << max_displacement << ", "
-        << n_closed_contacts << " of " << s.n_constraints
-        << " contacts closed\n";
+    out << std::scientific << std::setprecision(6) << "  max displacement "
+        << max_displacement << ", " << n_closed_contacts << " of "
+        << s.n_constraints << " contacts closed\n";
     out.flags(flags);
     out.precision(precision);
   }

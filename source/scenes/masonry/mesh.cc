@@ -20,7 +20,9 @@ namespace unilateral::masonry
     // Node i of n + 1 along [a, b]; the ends are a and b exactly, so edges
     // shared by two blocks get bitwise equal end coordinates.
     double
-    along(const double a, const double b, const unsigned int i,
+    along(const double       a,
+          const double       b,
+          const unsigned int i,
           const unsigned int n)
     {
       if (i == 0)
@@ -58,7 +60,7 @@ namespace unilateral::masonry
         const Block       &block = layout.blocks[b];
         const unsigned int nx    = n_cells_along(block.width(), cell_size);
         const unsigned int ny    = n_cells_along(block.height(), cell_size);
-        const auto first = static_cast<unsigned int>(vertices.size());
+        const auto         first = static_cast<unsigned int>(vertices.size());
         for (unsigned int j = 0; j <= ny; ++j)
           for (unsigned int i = 0; i <= nx; ++i)
             vertices.emplace_back(along(block.x0, block.x1, i, nx),

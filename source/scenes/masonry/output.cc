@@ -26,16 +26,17 @@ namespace unilateral::masonry
     public:
       StressPostprocessor(const std::vector<MaterialClass> &classes,
                           const std::vector<unsigned int>  &class_of_block)
-        : classes(classes)
-        , class_of_block(class_of_block)
-      {}
+          : classes(classes)
+          , class_of_block(class_of_block)
+      {
+      }
 
       void
       evaluate_vector_field(
         const dealii::DataPostprocessorInputs::Vector<2> &inputs,
         std::vector<dealii::Vector<double>> &computed_quantities) const override
       {
-        const auto cell = inputs.template get_cell<2>();
+        const auto           cell = inputs.template get_cell<2>();
         const MaterialClass &material =
           classes[class_of_block[cell->material_id()]];
         const double lambda = material.lambda();
@@ -51,17 +52,17 @@ namespace unilateral::masonry
             const double s_yy  = lambda * trace + 2 * mu * e_yy;
             const double s_xy  = 2 * mu * e_xy;
             const double s_zz  = lambda * trace;
-            const double von_mises = std::sqrt(
-              0.5 * ((s_xx - s_yy) * (s_xx - s_yy) +
-                     (s_yy - s_zz) * (s_yy - s_zz) +
-                     (s_zz - s_xx) * (s_zz - s_xx)) +
-              3 * s_xy * s_xy);
+            const double von_mises =
+              std::sqrt(0.5 * ((s_xx - s_yy) * (s_xx - s_yy) +
+                               (s_yy - s_zz) * (s_yy - s_zz) +
+                               (s_zz - s_xx) * (s_zz - s_xx)) +
+                        3 * s_xy * s_xy);
             dealii::Vector<double> &out = computed_quantities[q];
-            out[0] = s_xx;
-            out[1] = s_xy;
-            out[2] = s_xy;
-            out[3] = s_yy;
-            out[4] = von_mises;
+            out[0]                      = s_xx;
+            out[1]                      = s_xy;
+            out[2]                      = s_xy;
+            out[3]                      = s_yy;
+            out[4]                      = von_mises;
           }
       }
 
@@ -163,11 +164,12 @@ namespace unilateral::masonry
                   if (!constrained[dof])
                     continue;
                   const double weight = contacts.contact_weight[dof];
-                  const double p = weight > 0 ? force[dof] / weight : 0.0;
-                  pressure     = any ? std::max(pressure, p) : p;
-                  smallest_gap = any ? std::min(smallest_gap, gap[dof]) : gap[dof];
-                  is_active    = is_active || active[dof];
-                  any          = true;
+                  const double p      = weight > 0 ? force[dof] / weight : 0.0;
+                  pressure            = any ? std::max(pressure, p) : p;
+                  smallest_gap =
+                    any ? std::min(smallest_gap, gap[dof]) : gap[dof];
+                  is_active = is_active || active[dof];
+                  any       = true;
                 }
               contact_pressure[nodes[k]] = pressure;
               normal_gap[nodes[k]]       = smallest_gap;
@@ -191,7 +193,9 @@ namespace unilateral::masonry
         dealii::DataComponentInterpretation::DataComponentInterpretation>(
         2, dealii::DataComponentInterpretation::component_is_part_of_vector));
     data_out.add_data_vector(discretisation.dof_handler, displacement, stress);
-    data_out.add_data_vector(node_handler, contact_pressure, "contact_pressure");
+    data_out.add_data_vector(node_handler,
+                             contact_pressure,
+                             "contact_pressure");
     data_out.add_data_vector(node_handler, normal_gap, "normal_gap");
     data_out.add_data_vector(node_handler, active_set, "active_set");
     // Two subdivisions per cell: the patch points are the quadratic nodes,
@@ -230,7 +234,7 @@ namespace unilateral::masonry
         cell_data << "    </DataArray>\n";
       }
     cell_data << "    </CellData>\n";
-    std::string       text = vtu_text.str();
+    std::string       text         = vtu_text.str();
     const std::size_t end_of_piece = text.rfind("</Piece>");
     AssertThrow(end_of_piece != std::string::npos,
                 dealii::ExcMessage("unexpected VTU layout from DataOut"));

@@ -30,7 +30,7 @@ namespace unilateral::masonry
                 const std::string        &section,
                 const std::string        &name)
     {
-      const std::string text = prm.get(name);
+      const std::string   text = prm.get(name);
       std::vector<double> values;
       for (const std::string &item :
            dealii::Utilities::split_string_list(text, ','))

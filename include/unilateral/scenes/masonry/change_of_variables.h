@@ -73,10 +73,10 @@ namespace unilateral::masonry
      * @p describe names a DOF for error messages (e.g. its position). Throws
      * InputError if the constraints make C~ singular (a cycle).
      */
-    ChangeOfVariables(DofIndex                                     n_dofs,
-                      const std::vector<char>                     &dirichlet,
-                      const std::vector<UnilateralConstraint>     &constraints,
-                      const std::function<std::string(DofIndex)>  &describe);
+    ChangeOfVariables(DofIndex                                    n_dofs,
+                      const std::vector<char>                    &dirichlet,
+                      const std::vector<UnilateralConstraint>    &constraints,
+                      const std::function<std::string(DofIndex)> &describe);
 
     /// n: the LCP unknowns (physical DOFs minus Dirichlet DOFs).
     unsigned int
@@ -123,10 +123,10 @@ namespace unilateral::masonry
     to_physical(const double *new_variables) const;
 
   private:
-    unsigned int        n_variables = 0;
-    std::vector<int>    variable;
-    std::vector<int>    constraint_variable;
+    unsigned int             n_variables = 0;
+    std::vector<int>         variable;
+    std::vector<int>         constraint_variable;
     std::vector<std::size_t> term_start;
-    std::vector<Term>   terms;
+    std::vector<Term>        terms;
   };
 } // namespace unilateral::masonry

@@ -22,14 +22,14 @@ namespace unilateral::masonry
     explicit Discretisation(ElementType element);
 
     /// Vertical and horizontal displacement: two quadratic Lagrange fields.
-    ElementType                                 element;
-    dealii::Triangulation<2>                    triangulation;
-    std::unique_ptr<dealii::FiniteElement<2>>   fe;
+    ElementType                               element;
+    dealii::Triangulation<2>                  triangulation;
+    std::unique_ptr<dealii::FiniteElement<2>> fe;
     /// The scalar quadratic element with the same nodes, for nodal output.
-    std::unique_ptr<dealii::FiniteElement<2>>   scalar_fe;
-    std::unique_ptr<dealii::Mapping<2>>         mapping;
-    std::unique_ptr<dealii::Quadrature<2>>      quadrature;
-    std::unique_ptr<dealii::Quadrature<1>>      face_quadrature;
-    dealii::DoFHandler<2>                       dof_handler;
+    std::unique_ptr<dealii::FiniteElement<2>> scalar_fe;
+    std::unique_ptr<dealii::Mapping<2>>       mapping;
+    std::unique_ptr<dealii::Quadrature<2>>    quadrature;
+    std::unique_ptr<dealii::Quadrature<1>>    face_quadrature;
+    dealii::DoFHandler<2>                     dof_handler;
   };
 } // namespace unilateral::masonry

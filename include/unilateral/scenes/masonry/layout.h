@@ -40,7 +40,7 @@ namespace unilateral::masonry
     std::string name;
     /// H, the course (row) height: the unit of the mesh size h = H / 2^r and
     /// of the gap g.
-    double course_height = 1;
+    double             course_height = 1;
     std::vector<Block> blocks;
 
     BoundingBox

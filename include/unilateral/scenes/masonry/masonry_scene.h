@@ -14,30 +14,30 @@ namespace unilateral::masonry
   /// The sizes of one masonry problem (Tables 1 and 2 of the paper).
   struct Sizes
   {
-    unsigned int n_blocks = 0;           ///< n_b
-    unsigned int n_cells  = 0;
-    unsigned int n_dofs   = 0;           ///< before Dirichlet conditions
-    unsigned int n_dirichlet = 0;        ///< eliminated DOFs
-    unsigned int n_unknowns  = 0;        ///< n = n_dofs - n_dirichlet
-    unsigned int n_constraints = 0;      ///< n_c
-    unsigned int n_signorini   = 0;
-    unsigned int n_horizontal_joint = 0; ///< node pairs on horizontal joints
-    unsigned int n_vertical_joint   = 0; ///< node pairs on vertical joints
+    unsigned int n_blocks             = 0; ///< n_b
+    unsigned int n_cells              = 0;
+    unsigned int n_dofs               = 0; ///< before Dirichlet conditions
+    unsigned int n_dirichlet          = 0; ///< eliminated DOFs
+    unsigned int n_unknowns           = 0; ///< n = n_dofs - n_dirichlet
+    unsigned int n_constraints        = 0; ///< n_c
+    unsigned int n_signorini          = 0;
+    unsigned int n_horizontal_joint   = 0; ///< node pairs on horizontal joints
+    unsigned int n_vertical_joint     = 0; ///< node pairs on vertical joints
     unsigned int max_expansion_length = 0;
-    double       block_height = 0;       ///< H
-    double       cell_size    = 0;       ///< h = H / 2^r
-    double       gap          = 0;       ///< g
+    double       block_height         = 0; ///< H
+    double       cell_size            = 0; ///< h = H / 2^r
+    double       gap                  = 0; ///< g
   };
 
   /// One unilateral constraint after the solve.
   struct ConstraintResult
   {
-    ConstraintKind               kind;
-    std::array<double, 2>        position;
-    std::array<unsigned int, 2>  blocks; ///< lower/left, upper/right
-    double                       normal_gap;    ///< >= 0; 0 = closed
-    double                       contact_force; ///< nodal, >= 0 in compression
-    bool                         active;        ///< in the active set
+    ConstraintKind              kind;
+    std::array<double, 2>       position;
+    std::array<unsigned int, 2> blocks;        ///< lower/left, upper/right
+    double                      normal_gap;    ///< >= 0; 0 = closed
+    double                      contact_force; ///< nodal, >= 0 in compression
+    bool                        active;        ///< in the active set
   };
 
   /// The displacement at one node (support point) of one block.
@@ -155,7 +155,8 @@ namespace unilateral::masonry
     print_summary(std::ostream &out, const lcp::Report &report) const;
 
     void
-    write_summary_file(const RunContext &context, const lcp::Report &report) const;
+    write_summary_file(const RunContext  &context,
+                       const lcp::Report &report) const;
 
     Parameters parameters;
     /// Set if the scene was given its own layout.

@@ -24,8 +24,8 @@ namespace unilateral::masonry
    * edges.
    */
   void
-  build_triangulation(const Layout                      &layout,
-                      double                             cell_size,
-                      ElementType                        element,
-                      dealii::Triangulation<2, 2>       &triangulation);
+  build_triangulation(const Layout                &layout,
+                      double                       cell_size,
+                      ElementType                  element,
+                      dealii::Triangulation<2, 2> &triangulation);
 } // namespace unilateral::masonry
