@@ -22,7 +22,7 @@ namespace unilateral::lcp
     std::shared_ptr<const ActiveSetFactor> inherited)
     : A(A)
     , counters(counters)
-    , own(std::make_shared<ActiveSetFactor>(counters))
+    , own(std::make_shared<ActiveSetFactor>())
     , inherited(std::move(inherited))
   {
     const Vector diagonal = A.diagonal();
@@ -45,30 +45,104 @@ namespace unilateral::lcp
     return inherited;
   }
 
+  void
+  ActiveSetFactor::solve(const DenseMatrix &B, DenseMatrix &X) const
+  {
+    if (reduced_index.empty())
+      {
+        cholesky.solve(B, X);
+        return;
+      }
+    const Index n = static_cast<Index>(fixed.size());
+    DenseMatrix B_free(n_free, B.cols()), X_free;
+    for (Index i = 0; i < n; ++i)
+      if (reduced_index[i] >= 0)
+        B_free.row(reduced_index[i]) = B.row(i);
+    cholesky.solve(B_free, X_free);
+    X.resize(n, B.cols());
+    for (Index i = 0; i < n; ++i)
+      if (reduced_index[i] >= 0)
+        X.row(i) = X_free.row(reduced_index[i]);
+      else
+        X.row(i) = B.row(i) / fixed_diagonal[i];
+  }
+
   bool
   ActiveSetSystem::factorise(const std::vector<char> &fixed)
   {
-    if (reduced.rows() != A.rows())
-      reduced = A;
-    // Same pattern as A: zero the coupling of fixed indices, keep a scaled
-    // identity on their diagonal so the conditioning is that of A.
-    for (Index j = 0; j < A.outerSize(); ++j)
-      {
-        const Index begin = A.outerIndexPtr()[j];
-        const Index end   = A.outerIndexPtr()[j + 1];
-        for (Index k = begin; k < end; ++k)
-          {
-            const Index i = A.innerIndexPtr()[k];
-            if (fixed[i] || fixed[j])
-              reduced.valuePtr()[k] = (i == j) ? fixed_diagonal[i] : 0.0;
-            else
-              reduced.valuePtr()[k] = A.valuePtr()[k];
-          }
-      }
-    own->fixed = fixed;
-    own_valid  = own->cholesky.factorise(reduced);
+    const Index n       = A.rows();
+    Index       n_fixed = 0;
+    for (const char f : fixed)
+      n_fixed += f;
+
+    own->fixed          = fixed;
+    own->fixed_diagonal = fixed_diagonal;
     inherited.reset(); // our own factor is closer from now on
+
+    if (n_fixed <= reduced_threshold * n)
+      {
+        // The full pattern: zero the coupling of fixed indices, keep a
+        // scaled identity on their diagonal (the conditioning of A).
+        own->reduced_index.clear();
+        own->n_free = n - n_fixed;
+        if (reduced.rows() != n || reduced.nonZeros() != A.nonZeros())
+          reduced = A;
+        for (Index j = 0; j < A.outerSize(); ++j)
+          for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1];
+               ++k)
+            {
+              const Index i = A.innerIndexPtr()[k];
+              if (fixed[i] || fixed[j])
+                reduced.valuePtr()[k] = (i == j) ? fixed_diagonal[i] : 0.0;
+              else
+                reduced.valuePtr()[k] = A.valuePtr()[k];
+            }
+        own_valid = own->cholesky.factorise(reduced, counters);
+        return own_valid;
+      }
+
+    // A_FF on its own, in the ordering of A restricted to F.
+    if (full_ordering.empty())
+      full_ordering = SparseCholesky::amd_ordering(A, counters);
+    own->reduced_index.assign(n, -1);
+    Index n_free = 0;
+    for (Index i = 0; i < n; ++i)
+      if (!fixed[i])
+        own->reduced_index[i] = n_free++;
+    own->n_free = n_free;
+
+    std::vector<Index> ordering;
+    ordering.reserve(n_free);
+    for (const Index old_index : full_ordering)
+      if (!fixed[old_index])
+        ordering.push_back(own->reduced_index[old_index]);
+
+    reduced.resize(n_free, n_free);
+    reduced.data().clear();
+    std::vector<Index> column_sizes(n_free, 0);
+    for (Index j = 0; j < n; ++j)
+      if (!fixed[j])
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          column_sizes[own->reduced_index[j]] += !fixed[it.row()];
+    reduced.reserve(column_sizes);
+    for (Index j = 0; j < n; ++j)
+      if (!fixed[j])
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          if (!fixed[it.row()])
+            reduced.insert(own->reduced_index[it.row()],
+                           own->reduced_index[j]) = it.value();
+    reduced.makeCompressed();
+    own_valid = own->cholesky.factorise(reduced, ordering, counters);
     return own_valid;
+  }
+
+  void
+  ActiveSetSystem::solve_with(const ActiveSetFactor &factor,
+                              const DenseMatrix     &B,
+                              DenseMatrix           &X) const
+  {
+    factor.solve(B, X);
+    counters.triangular_solves += static_cast<unsigned int>(B.cols());
   }
 
   void
@@ -95,7 +169,7 @@ namespace unilateral::lcp
   {
     // Start from the preconditioner's answer; then CG on the residual. The
     // tolerance is what a backward-stable direct solve achieves.
-    preconditioner.cholesky.solve(B, X);
+    solve_with(preconditioner, B, X);
     DenseMatrix KX;
     apply(fixed, X, KX);
     counters.matrix_vector_products += static_cast<unsigned int>(B.cols());
@@ -108,8 +182,9 @@ namespace unilateral::lcp
         Vector       x = X.col(column);
         if (r.norm() <= target)
           continue;
-        Vector z, p, q;
-        preconditioner.cholesky.solve(r, z);
+        DenseMatrix z_matrix;
+        solve_with(preconditioner, r, z_matrix);
+        Vector z = z_matrix.col(0), p;
         p               = z;
         double rz       = r.dot(z);
         bool   converged = false;
@@ -131,7 +206,8 @@ namespace unilateral::lcp
                 converged = true;
                 break;
               }
-            preconditioner.cholesky.solve(r, z);
+            solve_with(preconditioner, r, z_matrix);
+            z                    = z_matrix.col(0);
             const double rz_next = r.dot(z);
             p                    = z + (rz_next / rz) * p;
             rz                   = rz_next;
@@ -178,7 +254,7 @@ namespace unilateral::lcp
     bool        solved = false;
     if (own_valid && own->fixed == fixed)
       {
-        own->cholesky.solve(rhs, solution);
+        solve_with(*own, rhs, solution);
         solved = true;
       }
     else
@@ -203,7 +279,7 @@ namespace unilateral::lcp
       {
         if (!factorise(fixed))
           return false;
-        own->cholesky.solve(rhs, solution);
+        solve_with(*own, rhs, solution);
       }
     for (Index i = 0; i < n; ++i)
       if (!fixed[i])

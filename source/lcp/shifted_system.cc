@@ -6,9 +6,9 @@ namespace unilateral::lcp
 {
   ShiftedSystem::ShiftedSystem(const SparseMatrix &A, Counters &counters)
     : A(A)
+    , counters(counters)
     , shifted(A)
     , diagonal_position(A.rows(), -1)
-    , cholesky(counters)
   {
     for (Index j = 0; j < A.outerSize(); ++j)
       for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k)
@@ -26,12 +26,13 @@ namespace unilateral::lcp
     for (Index j = 0; j < A.rows(); ++j)
       shifted.valuePtr()[diagonal_position[j]] =
         A.valuePtr()[diagonal_position[j]] + shift[j];
-    return cholesky.factorise(shifted);
+    return cholesky.factorise(shifted, counters);
   }
 
   void
   ShiftedSystem::solve(const Vector &r, Vector &x) const
   {
     cholesky.solve(r, x);
+    ++counters.triangular_solves;
   }
 } // namespace unilateral::lcp

@@ -66,6 +66,7 @@ namespace unilateral::lcp
     void
     merge_counters(Counters &into, const Counters &from)
     {
+      into.orderings += from.orderings;
       into.symbolic_analyses += from.symbolic_analyses;
       into.numeric_factorisations += from.numeric_factorisations;
       into.reused_factorisations += from.reused_factorisations;
@@ -114,9 +115,15 @@ namespace unilateral::lcp
       Report            report;
       report.solver = info.name;
 
-      const double relative_eps = parameters.regularisation >= 0 ?
-                                    parameters.regularisation :
-                                    auto_regularisation;
+      // 'auto': the scene's value, raised to the method's own preference
+      // when the scene needs regularisation at all (PSOR converges at a rate
+      // set by eps; the projection makes the answer exact anyway).
+      const double relative_eps =
+        parameters.regularisation >= 0 ?
+          parameters.regularisation :
+          (auto_regularisation > 0 ?
+             std::max(auto_regularisation, info.preferred_regularisation) :
+             0.0);
       const bool regularise = info.needs_definite_matrix && relative_eps > 0;
 
       // Stage 1: the method, on A + eps d I if it needs a definite matrix.
@@ -148,17 +155,55 @@ namespace unilateral::lcp
         return report;
 
       // Stage 2: the projection, PDAS on A from the approximate solution.
-      PhaseTimer timer(report, "projection");
-      Report     projection;
-      run_method(SolverRegistry::get("pdas"),
-                 problem,
-                 parameters,
-                 solution,
-                 projection,
-                 progress);
-      report.projected             = true;
-      report.projection_iterations = projection.iterations;
-      merge_counters(report.counters, projection.counters);
+      // If u_eps is far from the answer (a large eps), PDAS on A may meet an
+      // active set that leaves a body unsupported, a singular system. Then
+      // continue in eps: PDAS on A + eps_k d I with eps_k falling by 1e3 per
+      // stage, each warm-started from the last, and A again at the end.
+      PhaseTimer   timer(report, "projection");
+      const double mean_diagonal =
+        problem.size() > 0 && problem.A.diagonal().mean() > 0 ?
+          problem.A.diagonal().mean() :
+          1.0;
+      double   eps_k = regularise ? report.regularisation : 0.0;
+      Solution start = solution;
+      Report   projection;
+      for (;;)
+        {
+          projection = Report();
+          solution   = start;
+          run_method(SolverRegistry::get("pdas"),
+                     problem,
+                     parameters,
+                     solution,
+                     projection,
+                     progress);
+          report.projection_iterations += projection.iterations;
+          merge_counters(report.counters, projection.counters);
+          eps_k *= 1e-3;
+          if (projection.status != Status::singular ||
+              eps_k < 1e-14 * mean_diagonal)
+            break;
+          // One continuation stage on A + eps_k d I.
+          Problem shifted = problem;
+          for (Index j = 0; j < shifted.size(); ++j)
+            shifted.A.coeffRef(j, j) += eps_k;
+          Report stage;
+          run_method(SolverRegistry::get("pdas"),
+                     shifted,
+                     parameters,
+                     start,
+                     stage,
+                     progress);
+          report.projection_iterations += stage.iterations;
+          ++report.continuation_stages;
+          merge_counters(report.counters, stage.counters);
+          if (!stage.converged())
+            {
+              projection = stage;
+              break;
+            }
+        }
+      report.projected = true;
       if (!projection.converged())
         {
           report.status  = projection.status;
@@ -235,7 +280,7 @@ namespace unilateral::lcp
           }
       }
 
-    // The factor refers to counters of this call: it must not outlive it.
+    // Release the last factorisation (it can be large) before returning.
     solution.factor.reset();
 
     // The final check, always against the original problem.

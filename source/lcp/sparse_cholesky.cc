@@ -23,11 +23,10 @@ namespace unilateral::lcp
       common.print          = 0;
       common.error_handler  = nullptr;
       common.quick_return_if_not_posdef = 1;
-      // AMD alone: its analysis takes about 1 s at 0.9 million unknowns
-      // where CHOLMOD's default also tries METIS (5-10 s) for a few percent
-      // less fill; one numeric factorisation costs about 4 s.
-      common.nmethods           = 1;
-      common.method[0].ordering = CHOLMOD_AMD;
+      // Orderings: AMD alone (set per analysis below). Its analysis takes
+      // about 1 s at 0.9 million unknowns where CHOLMOD's default also tries
+      // METIS (5-10 s) for a few percent less fill; one numeric
+      // factorisation costs about 4 s.
     }
 
     ~Implementation()
@@ -73,15 +72,22 @@ namespace unilateral::lcp
     }
   };
 
-  SparseCholesky::SparseCholesky(Counters &counters)
+  SparseCholesky::SparseCholesky()
     : implementation(std::make_unique<Implementation>())
-    , counters(counters)
   {}
 
   SparseCholesky::~SparseCholesky() = default;
 
   bool
-  SparseCholesky::factorise(const SparseMatrix &A)
+  SparseCholesky::factorise(const SparseMatrix &A, Counters &counters)
+  {
+    return factorise(A, {}, counters);
+  }
+
+  bool
+  SparseCholesky::factorise(const SparseMatrix       &A,
+                            const std::vector<Index> &ordering,
+                            Counters                 &counters)
   {
     if (!A.isCompressed())
       throw std::logic_error("SparseCholesky needs a compressed matrix");
@@ -99,7 +105,20 @@ namespace unilateral::lcp
       {
         if (impl.factor != nullptr)
           cholmod_free_factor(&impl.factor, &impl.common);
-        impl.factor = cholmod_analyze(&matrix, &impl.common);
+        if (ordering.empty())
+          {
+            impl.common.nmethods           = 1;
+            impl.common.method[0].ordering = CHOLMOD_AMD;
+            impl.factor = cholmod_analyze(&matrix, &impl.common);
+          }
+        else
+          {
+            impl.common.nmethods           = 1;
+            impl.common.method[0].ordering = CHOLMOD_GIVEN;
+            impl.factor                    = cholmod_analyze_p(
+              &matrix, const_cast<Index *>(ordering.data()), nullptr, 0,
+              &impl.common);
+          }
         if (impl.factor == nullptr)
           throw std::runtime_error(
             "CHOLMOD analysis failed (status " +
@@ -117,6 +136,31 @@ namespace unilateral::lcp
     if (impl.common.status == CHOLMOD_OUT_OF_MEMORY)
       throw std::runtime_error("CHOLMOD factorisation ran out of memory");
     return impl.factor_valid;
+  }
+
+  std::vector<Index>
+  SparseCholesky::amd_ordering(const SparseMatrix &A, Counters &counters)
+  {
+    std::vector<Index> ordering(A.rows());
+    if (A.rows() == 0)
+      return ordering;
+    Implementation impl;
+    cholmod_sparse matrix = Implementation::view(A);
+    if (!cholmod_amd(&matrix, nullptr, 0, ordering.data(), &impl.common))
+      throw std::runtime_error("CHOLMOD AMD ordering failed (status " +
+                               std::to_string(impl.common.status) + ")");
+    ++counters.orderings;
+    return ordering;
+  }
+
+  std::vector<Index>
+  SparseCholesky::ordering() const
+  {
+    const auto &impl = *implementation;
+    if (impl.factor == nullptr)
+      return {};
+    const Index *perm = static_cast<const Index *>(impl.factor->Perm);
+    return std::vector<Index>(perm, perm + impl.factor->n);
   }
 
   bool
@@ -173,6 +217,5 @@ namespace unilateral::lcp
                                 B.rows(),
                                 B.cols());
     cholmod_free_dense(&solution, &impl.common);
-    counters.triangular_solves += static_cast<unsigned int>(B.cols());
   }
 } // namespace unilateral::lcp

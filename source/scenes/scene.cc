@@ -88,6 +88,7 @@ namespace unilateral
       .set("n_active", report.n_active)
       .set("iterations", report.iterations)
       .set("projection_iterations", report.projection_iterations)
+      .set("continuation_stages", report.continuation_stages)
       .set("regularisation", report.regularisation)
       .set("converged", report.converged())
       .set("status", lcp::to_string(report.status))
@@ -120,7 +121,8 @@ namespace unilateral
       calls.set("solver: " + phase, 1u);
 
     JsonObject &counters = summary.object("counters");
-    counters.set("symbolic_analyses", report.counters.symbolic_analyses)
+    counters.set("orderings", report.counters.orderings)
+      .set("symbolic_analyses", report.counters.symbolic_analyses)
       .set("numeric_factorisations", report.counters.numeric_factorisations)
       .set("reused_factorisations", report.counters.reused_factorisations)
       .set("cg_iterations", report.counters.cg_iterations)

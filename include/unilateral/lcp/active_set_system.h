@@ -8,19 +8,28 @@
 namespace unilateral::lcp
 {
   /**
-   * A factorisation of A with a set of indices fixed (their rows and columns
-   * replaced by the diagonal), kept so that a later system on a nearby
-   * matrix can use it as a preconditioner: the next active set, or the
-   * projection step (A instead of A + eps I).
+   * A factorisation of K(X): A with the indices X fixed, i.e. A_FF on the
+   * free indices F and a diagonal D_X on the fixed ones. Either A_FF was
+   * extracted and factorised on its own (in the ordering of A restricted to
+   * F), or the full pattern was factorised with the fixed rows and columns
+   * replaced by D_X. Kept so that a later system on a nearby matrix can use it
+   * as a preconditioner: the next active set, or the projection step (A
+   * instead of A + eps I).
    */
   struct ActiveSetFactor
   {
-    explicit ActiveSetFactor(Counters &counters)
-      : cholesky(counters)
-    {}
-
-    SparseCholesky    cholesky;
     std::vector<char> fixed;
+    /// Position of each free index in A_FF, -1 for fixed ones; empty when
+    /// the full pattern was factorised.
+    std::vector<Index> reduced_index;
+    Index              n_free = 0;
+    /// D_X on the fixed indices.
+    Vector         fixed_diagonal;
+    SparseCholesky cholesky;
+
+    /// X = K(X)^-1 B.
+    void
+    solve(const DenseMatrix &B, DenseMatrix &X) const;
   };
 
   /**
@@ -30,9 +39,13 @@ namespace unilateral::lcp
    * i.e. minimise 1/2 x^T A x - r^T x with x_X fixed (the "QEP" of
    * Ainsworth & Mihai, eq. (57) of Fernandes et al.).
    *
-   * The reduced matrix K(X) is never extracted: the full pattern is kept and
-   * the fixed rows and columns are replaced by their diagonal entry, so one
-   * symbolic analysis of A serves every active set.
+   * Two ways to factorise K(X), chosen by the size of X: with few fixed
+   * indices the full pattern is kept (fixed rows and columns replaced by the
+   * diagonal), so the one symbolic analysis of A serves every active set;
+   * with many (more than a sixth of the unknowns, where the smaller factor
+   * pays for a symbolic pass) A_FF is extracted and factorised in the AMD
+   * ordering of A restricted to F, "in the ordering established in the
+   * Analyse phase" as Fernandes et al. do for C_RR.
    *
    * Factorisations are reused. A factor for exactly this X is used directly.
    * A factor for a nearby matrix, one whose fixed set differs in at most
@@ -70,6 +83,9 @@ namespace unilateral::lcp
     /// Fixed-set changes up to which a factor is reused through CG.
     static constexpr unsigned int max_changes = 16;
 
+    /// Fraction of fixed indices above which A_FF is factorised on its own.
+    static constexpr double reduced_threshold = 1.0 / 6.0;
+
   private:
     bool
     factorise(const std::vector<char> &fixed);
@@ -81,6 +97,12 @@ namespace unilateral::lcp
 
     /// Preconditioned CG on K(X) X = B with @p preconditioner; true if
     /// every column reached the tolerance within @p max_iterations.
+    /// Solve with @p factor, counting the triangular solves.
+    void
+    solve_with(const ActiveSetFactor &factor,
+               const DenseMatrix     &B,
+               DenseMatrix           &X) const;
+
     bool
     preconditioned_cg(const std::vector<char> &fixed,
                       const ActiveSetFactor   &preconditioner,
@@ -90,7 +112,10 @@ namespace unilateral::lcp
 
     const SparseMatrix                     &A;
     Counters                               &counters;
+    /// The full pattern with fixed rows/columns diagonal, or A_FF.
     SparseMatrix                            reduced;
+    /// AMD ordering of A (new-to-old), computed on first need.
+    std::vector<Index>                      full_ordering;
     std::shared_ptr<ActiveSetFactor>        own;
     bool                                    own_valid = false;
     std::shared_ptr<const ActiveSetFactor>  inherited;

@@ -25,6 +25,8 @@ namespace unilateral::lcp
   /// Work counters: what ran, not how long it took (deterministic, testable).
   struct Counters
   {
+    /// Fill-reducing orderings computed on their own (AMD).
+    unsigned int orderings              = 0;
     unsigned int symbolic_analyses      = 0;
     unsigned int numeric_factorisations = 0;
     /// Systems solved with the factor of a nearby matrix as preconditioner
@@ -46,6 +48,8 @@ namespace unilateral::lcp
     unsigned int iterations = 0;
     /// Iterations of the projection step (PDAS on A from u_eps), if it ran.
     unsigned int projection_iterations = 0;
+    /// eps-continuation stages the projection needed (0 normally).
+    unsigned int continuation_stages = 0;
     bool         projected             = false;
     /// Regularisation actually added to the diagonal (absolute), 0 if none.
     double       regularisation = 0;

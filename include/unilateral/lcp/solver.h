@@ -134,6 +134,9 @@ namespace unilateral::lcp
     /// methods). Approximate methods (PSOR, interior point) get the
     /// projection step afterwards when 'Projection' is on.
     bool exact = true;
+    /// The relative eps 'Regularisation = auto' uses at least, when the
+    /// scene needs regularisation (0: the scene's value).
+    double preferred_regularisation = 0;
     std::function<std::unique_ptr<Solver>(const SolverParameters &)> create;
   };
 
@@ -164,7 +167,7 @@ namespace unilateral::lcp
   };
 
 #define UNILATERAL_REGISTER_SOLVER(                                              \
-  classname, name, description, definite, dense, exact)                          \
+  classname, name, description, definite, dense, exact, preferred_eps)           \
   namespace                                                                      \
   {                                                                              \
     const bool registered_##classname = ::unilateral::lcp::SolverRegistry::add( \
@@ -173,6 +176,7 @@ namespace unilateral::lcp
        definite,                                                                 \
        dense,                                                                    \
        exact,                                                                    \
+       preferred_eps,                                                            \
        [](const ::unilateral::lcp::SolverParameters &parameters)                 \
          -> std::unique_ptr<::unilateral::lcp::Solver> {                         \
          return std::make_unique<classname>(parameters);                         \
@@ -182,8 +186,10 @@ namespace unilateral::lcp
   /**
    * Solve @p problem with the method and options in @p parameters:
    *  - methods that need a definite matrix get A + eps I (eps relative to the
-   *    mean diagonal; "auto" takes @p auto_regularisation) and then the
-   *    projection step (PDAS on A from u_eps) that recovers the exact solution;
+   *    mean diagonal; "auto" takes @p auto_regularisation, or the method's
+   *    preferred eps if larger) and then the projection step (PDAS on A from
+   *    u_eps, continued in eps if it meets a singular system) that recovers
+   *    the exact solution;
    *    approximate methods (PSOR, interior point) get the projection too;
    *  - with schur_complement, the reduced LCP on S is formed (dense) and
    *    solved, and u_E recovered;

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace unilateral::lcp
 {
@@ -15,12 +16,13 @@ namespace unilateral::lcp
    * every numeric factorisation of a matrix with the same pattern reuses it.
    *
    * Matrices are given with both triangles stored; CHOLMOD reads the upper
-   * one. Work is counted in the Counters passed at construction.
+   * one. factorise() counts its work in the Counters it is given; solves are
+   * counted by the caller (a factor may be shared with a later solve).
    */
   class SparseCholesky
   {
   public:
-    explicit SparseCholesky(Counters &counters);
+    SparseCholesky();
     ~SparseCholesky();
     SparseCholesky(const SparseCholesky &) = delete;
     SparseCholesky &
@@ -32,7 +34,26 @@ namespace unilateral::lcp
      * keeps no factor) if A is not numerically positive definite.
      */
     bool
-    factorise(const SparseMatrix &A);
+    factorise(const SparseMatrix &A, Counters &counters);
+
+    /**
+     * The same with a given fill-reducing ordering (new-to-old, as CHOLMOD's
+     * Perm): the symbolic analysis, run only when the pattern changed, then
+     * skips the ordering step (the plate paper's "ordering established in
+     * the Analyse phase", restricted to a submatrix).
+     */
+    bool
+    factorise(const SparseMatrix        &A,
+              const std::vector<Index> &ordering,
+              Counters                 &counters);
+
+    /// The fill-reducing ordering of the last analysis (new-to-old).
+    std::vector<Index>
+    ordering() const;
+
+    /// The AMD ordering of A (new-to-old) alone, without a factorisation.
+    static std::vector<Index>
+    amd_ordering(const SparseMatrix &A, Counters &counters);
 
     /// Solve A x = b with the current factor.
     void
@@ -52,6 +73,5 @@ namespace unilateral::lcp
   private:
     struct Implementation;
     std::unique_ptr<Implementation> implementation;
-    Counters                       &counters;
   };
 } // namespace unilateral::lcp

@@ -140,5 +140,6 @@ namespace unilateral::lcp
                              "(Fernandes et al.), parameters p, tolerance",
                              true,
                              false,
-                             true)
+                             true,
+                             0)
 } // namespace unilateral::lcp

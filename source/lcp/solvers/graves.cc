@@ -214,5 +214,6 @@ namespace unilateral::lcp
                              "lexicographic (use with 'Schur complement')",
                              false,
                              true,
-                             true)
+                             true,
+                             0)
 } // namespace unilateral::lcp

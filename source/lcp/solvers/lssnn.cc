@@ -166,5 +166,6 @@ namespace unilateral::lcp
                              "constraints (Lawson & Hanson; Ainsworth & Mihai)",
                              true,
                              false,
-                             true)
+                             true,
+                             0)
 } // namespace unilateral::lcp

@@ -121,5 +121,6 @@ namespace unilateral::lcp
                              "Ainsworth & Mihai), parameter tau",
                              true,
                              false,
-                             true)
+                             true,
+                             0)
 } // namespace unilateral::lcp

@@ -88,19 +88,33 @@ namespace unilateral::lcp
         for (unsigned int iteration = 0;; ++iteration)
           {
             // r = b - A u + lambda (on S).
-            Vector r = problem.b - problem.A * u;
+            const Vector Au = problem.A * u;
+            Vector       r  = problem.b - Au;
             ++report.counters.matrix_vector_products;
             for (Index k = 0; k < n_c; ++k)
               r[problem.constrained[k]] += lambda[k];
             const double gap      = slack.dot(lambda);
             const double mu       = n_c > 0 ? gap / n_c : 0.0;
             const double residual = r.norm();
+            // tol2 is absolute; never ask for less than the rounding floor
+            // of the residual (epsilon times the terms that cancel).
+            const double floor =
+              100 * epsilon *
+              (Au.norm() + problem.b.norm() + lambda.norm());
+            if (!std::isfinite(residual) || !std::isfinite(gap))
+              {
+                report.status  = Status::singular;
+                report.message = "PDPC broke down (non-finite iterate) at "
+                                 "iteration " +
+                                 std::to_string(iteration);
+                break;
+              }
             if (progress != nullptr && iteration > 0)
               *progress << "    pdpc iteration " << iteration
                         << std::scientific << std::setprecision(2)
                         << ": mu " << mu << ", residual " << residual
                         << std::defaultfloat << std::endl;
-            if (mu <= tol_gap && residual <= tol_residual)
+            if (mu <= tol_gap && residual <= std::max(tol_residual, floor))
               {
                 report.status = Status::converged;
                 break;
@@ -189,5 +203,6 @@ namespace unilateral::lcp
                              "(Ainsworth & Mihai), with diagonal scaling",
                              false,
                              false,
-                             false)
+                             false,
+                             0)
 } // namespace unilateral::lcp

@@ -128,5 +128,6 @@ namespace unilateral::lcp
                              "(Ainsworth & Mihai), parameters omega, tol",
                              true,
                              false,
-                             false)
+                             false,
+                             1e-2)
 } // namespace unilateral::lcp
