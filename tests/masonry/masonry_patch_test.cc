@@ -121,10 +121,10 @@ namespace
               << (c.two_materials ? ", two materials" : "")
               << (c.top_traction_y != 0 ? ", top load" : "") << ":\n";
     // With g = 0 the vertical joints at the top carry no force while closed
-    // (degenerate contacts), where the projection step may cycle; the status
-    // is printed for information, the answer is judged by its KKT residual.
-    std::cout << "  solver status: " << lcp::to_string(run.report.status)
-              << ", KKT residuals <= 1e-10: "
+    // (degenerate contacts), where the projection step may cycle on
+    // round-off and end with status "iteration limit"; the answer is judged
+    // by its KKT residual and by the exact solution.
+    std::cout << "  KKT residuals <= 1e-10: "
               << yes_no(run.report.kkt.max() <= 1e-10) << "\n";
 
     const auto nodes   = run.scene->nodal_displacements();

@@ -3,7 +3,8 @@
 // relative KKT residuals <= 1e-10 (after the projection step where the
 // method has one) and give the same displacement (max nodal difference
 // <= 1e-8 of the largest displacement) and the same energy (1e-10 relative)
-// as PDAS. The status of every run is printed too.
+// as PDAS. The status is not printed: where contacts are degenerate it is
+// decided by round-off (see below).
 //
 // Runs left out (printed with the reason, never silently):
 //  - psor at m = 20 for running bond and laminae: 100000 sweeps do not reach the paper's tolerance
@@ -11,10 +12,11 @@
 //    264 s to 6345 s there), and a minute each is over this test's budget;
 //  - lssnn and graves on the Schur complement for running bond at m = 20:
 //    90 s and 2 min (graves then stops on cycling through round-off).
-// The stack bond runs end with status "iteration limit": the projection
-// step (PDAS on A) cycles on degenerate contacts (vertical joints at the
-// top, where gap and force are both zero) although its iterate already
-// solves the LCP to round-off; see the README of benchmarks/masonry_tables.
+// Stack bond has degenerate contacts (vertical joints at the top, closed
+// with zero force; their number is printed), on which the projection step
+// (PDAS on A) may cycle until its iteration limit, with status "iteration
+// limit", although its iterate solves the LCP to round-off; whether it
+// cycles depends on round-off. See the README of benchmarks/masonry_tables.
 // There the iteration limit is lowered to 100 to keep the test short.
 #include "masonry_test_tools.h"
 
@@ -113,8 +115,7 @@ main()
                   << " (n = " << reference.scene->sizes().n_unknowns
                   << ", n_c = " << reference.scene->sizes().n_constraints
                   << ", " << n_degenerate << " degenerate contacts):\n"
-                  << "  pdas: " << lcp::to_string(reference.report.status)
-                  << ", KKT <= 1e-10: "
+                  << "  pdas: KKT <= 1e-10: "
                   << yes_no(reference.report.kkt.max() <= 1e-10) << "\n";
 
         for (const Method &method : methods)
@@ -136,9 +137,7 @@ main()
                                                reference_u[i].displacement[d]));
             const double energy_difference =
               std::abs(result.report.energy - reference.report.energy);
-            std::cout << "  " << label(method) << ": "
-                      << lcp::to_string(result.report.status)
-                      << ", KKT <= 1e-10: "
+            std::cout << "  " << label(method) << ": KKT <= 1e-10: "
                       << yes_no(result.report.kkt.max() <= 1e-10)
                       << ", u = pdas: " << yes_no(difference <= 1e-8 * scale)
                       << ", energy = pdas: "
