@@ -113,47 +113,41 @@ namespace unilateral::masonry
     problem_sizes.gap          = parameters.boundary.relative_gap * H;
   }
 
+  // Points closer than this are the same point: far above the round-off
+  // in the coordinates, far below the node spacing h/2.
+  double
+  MasonryScene::coincidence_tolerance() const
+  {
+    return 1e-8 * problem_sizes.cell_size;
+  }
+
   // DOFs, then the supports and joints found on the mesh, then the change of
   // variables to normal gaps.
   void
-  MasonryScene::setup_system()
-  {
-    Discretisation &discretisation = state->discretisation;
-    discretisation.dof_handler.reinit(discretisation.triangulation);
-    discretisation.dof_handler.distribute_dofs(*discretisation.fe);
-    problem_sizes.n_dofs = discretisation.dof_handler.n_dofs();
-  }
-
-  const Sizes &
-  MasonryScene::set_up(RunContext &context)
+  MasonryScene::setup_system(const RunContext &context)
   {
     {
-      const auto timer = section(context, "make grid");
-      make_grid();
-    }
-    stage(context,
-          std::to_string(problem_sizes.n_blocks) + " blocks, " +
-            std::to_string(problem_sizes.n_cells) + " cells");
-    {
-      const auto timer = section(context, "distribute DOFs");
-      setup_system();
+      const auto      timer          = section(context, "distribute DOFs");
+      Discretisation &discretisation = state->discretisation;
+      discretisation.dof_handler.reinit(discretisation.triangulation);
+      discretisation.dof_handler.distribute_dofs(*discretisation.fe);
+      problem_sizes.n_dofs = discretisation.dof_handler.n_dofs();
     }
     stage(context,
           std::to_string(problem_sizes.n_dofs) + " DOFs; detecting contacts");
     {
       const auto timer = section(context, "contact detection");
-      // Coincidence tolerance: far above round-off in the coordinates, far
-      // below the node spacing h/2.
-      const double tolerance = 1e-8 * problem_sizes.cell_size;
-      state->contacts = detect_contacts(state->discretisation.dof_handler,
+      state->contacts  = detect_contacts(state->discretisation.dof_handler,
                                         parameters.boundary.signorini_fraction,
                                         problem_sizes.gap,
-                                        tolerance);
+                                        coincidence_tolerance());
     }
     {
       const auto        timer    = section(context, "change of variables");
       const ContactSet &contacts = state->contacts;
-      auto              describe = [&contacts](const DofIndex dof) {
+      // Only cycles among constrained DOFs can fail, so the constraint list
+      // names every DOF an error message needs.
+      auto describe = [&contacts](const DofIndex dof) {
         for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
           if (contacts.constraints[k].lower == dof ||
               (contacts.constraints[k].kind != ConstraintKind::signorini &&
@@ -162,8 +156,8 @@ namespace unilateral::masonry
                    describe_point(contacts.position[k][0],
                                   contacts.position[k][1],
                                   contacts.constraints[k].lower == dof ?
-                                                 contacts.blocks[k][0] :
-                                                 contacts.blocks[k][1]);
+                                    contacts.blocks[k][0] :
+                                    contacts.blocks[k][1]);
         return "DOF " + std::to_string(dof);
       };
       state->change = std::make_unique<ChangeOfVariables>(problem_sizes.n_dofs,
@@ -183,6 +177,19 @@ namespace unilateral::masonry
           "n = " + std::to_string(problem_sizes.n_unknowns) +
             " unknowns, n_c = " + std::to_string(problem_sizes.n_constraints) +
             " constraints");
+  }
+
+  const Sizes &
+  MasonryScene::set_up(RunContext &context)
+  {
+    {
+      const auto timer = section(context, "make grid");
+      make_grid();
+    }
+    stage(context,
+          std::to_string(problem_sizes.n_blocks) + " blocks, " +
+            std::to_string(problem_sizes.n_cells) + " cells");
+    setup_system(context);
     return problem_sizes;
   }
 
@@ -195,7 +202,7 @@ namespace unilateral::masonry
     loads.gravity        = parameters.boundary.gravity;
     loads.top_traction   = parameters.boundary.top_traction;
     loads.y_top          = state->layout.bounding_box().y1;
-    loads.tolerance      = 1e-8 * problem_sizes.cell_size;
+    loads.tolerance      = coincidence_tolerance();
     state->problem       = assemble_lcp(state->discretisation,
                                   *state->change,
                                   state->contacts,

@@ -137,7 +137,10 @@ namespace unilateral::masonry
     make_grid();
 
     void
-    setup_system();
+    setup_system(const RunContext &context);
+
+    double
+    coincidence_tolerance() const;
 
     void
     assemble_system();
