@@ -205,12 +205,13 @@ def main():
                         "energy": f"{summary['energy']:.10e}",
                     })
                 rows.append(row)
+                # Written after every run, so a long run can be watched and
+                # an interrupted one keeps what it measured.
+                write_tables(results_directory, rows, tables)
                 print(f"table {table} {row['solver']:>14} {geometry:>12} "
                       f"m = {m:3}: {row['status']}, "
                       f"{row.get('solver_seconds', '-')} s "
                       f"(paper {paper_seconds or '-'})", flush=True)
-    if tables:
-        write_tables(results_directory, rows, tables)
     if arguments.scale:
         scale_rows = []
         for solver in ("pdas", "pdpc"):
@@ -219,10 +220,10 @@ def main():
                              225, solver, False, True, arguments.timeout,
                              arguments.relative_gap)
                 scale_rows.append((solver, geometry, result))
+                write_scale(results_directory, scale_rows)
                 print(f"scale {solver} {geometry}: {result['status']}, "
                       f"{result['wall']:.1f} s, "
                       f"{result.get('peak_mb', 0) or 0:.0f} MB", flush=True)
-        write_scale(results_directory, scale_rows)
 
 
 FIELDS = ["table", "solver", "geometry", "m", "n_b", "paper_n_b", "n",
