@@ -1,0 +1,388 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/scenes/masonry/assembly.h>
+#include <unilateral/scenes/masonry/mesh.h>
+#include <unilateral/scenes/masonry/scene_state.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <optional>
+#include <ostream>
+
+namespace unilateral::masonry
+{
+  namespace
+  {
+    // A timer section only if the context has a timer (tests may not).
+    std::optional<dealii::TimerOutput::Scope>
+    section(const RunContext &context, const std::string &name)
+    {
+      if (context.timer == nullptr)
+        return std::nullopt;
+      return std::optional<dealii::TimerOutput::Scope>(std::in_place,
+                                                       *context.timer,
+                                                       name);
+    }
+
+    void
+    stage(const RunContext &context, const std::string &text)
+    {
+      if (context.progress != nullptr)
+        *context.progress << "  masonry: " << text << std::endl;
+    }
+  } // namespace
+
+  void
+  MasonryScene::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    Parameters::declare_parameters(prm);
+  }
+
+  MasonryScene::MasonryScene(dealii::ParameterHandler &prm)
+  {
+    parameters.parse_parameters(prm);
+  }
+
+  MasonryScene::MasonryScene(const Parameters &parameters)
+      : parameters(parameters)
+  {
+  }
+
+  MasonryScene::MasonryScene(const Parameters &parameters, const Layout &layout)
+      : parameters(parameters)
+      , custom_layout(std::make_unique<Layout>(layout))
+  {
+  }
+
+  MasonryScene::~MasonryScene() = default;
+
+  const ContactSet &
+  MasonryScene::contact_set() const
+  {
+    return state->contacts;
+  }
+
+  const ChangeOfVariables &
+  MasonryScene::change_of_variables() const
+  {
+    return *state->change;
+  }
+
+  const lcp::Problem &
+  MasonryScene::problem() const
+  {
+    return state->problem;
+  }
+
+  const lcp::Solution &
+  MasonryScene::solution() const
+  {
+    return state->solution;
+  }
+
+  // The layout of the chosen bond and its mesh: every block meshed on its
+  // own with cells of size h = H / 2^r, material_id = block index.
+  void
+  MasonryScene::make_grid()
+  {
+    state         = std::make_unique<State>(parameters.geometry.element);
+    state->layout = custom_layout ? *custom_layout :
+                                    make_layout(parameters.geometry.bond,
+                                                parameters.geometry.m);
+    validate(state->layout);
+    state->class_of_block =
+      parameters.materials.classes_of_blocks(state->layout);
+
+    const double H = state->layout.course_height;
+    const double h = H / std::pow(2.0, parameters.geometry.refinement);
+    build_triangulation(state->layout,
+                        h,
+                        parameters.geometry.element,
+                        state->discretisation.triangulation);
+
+    problem_sizes = Sizes();
+    problem_sizes.n_blocks =
+      static_cast<unsigned int>(state->layout.blocks.size());
+    problem_sizes.n_cells =
+      state->discretisation.triangulation.n_active_cells();
+    problem_sizes.block_height = H;
+    problem_sizes.cell_size    = h;
+    problem_sizes.gap          = parameters.boundary.relative_gap * H;
+  }
+
+  // Points closer than this are the same point: far above the round-off
+  // in the coordinates, far below the node spacing h/2.
+  double
+  MasonryScene::coincidence_tolerance() const
+  {
+    return 1e-8 * problem_sizes.cell_size;
+  }
+
+  // DOFs, then the supports and joints found on the mesh, then the change of
+  // variables to normal gaps.
+  void
+  MasonryScene::setup_system(const RunContext &context)
+  {
+    {
+      const auto      timer          = section(context, "distribute DOFs");
+      Discretisation &discretisation = state->discretisation;
+      discretisation.dof_handler.reinit(discretisation.triangulation);
+      discretisation.dof_handler.distribute_dofs(*discretisation.fe);
+      problem_sizes.n_dofs = discretisation.dof_handler.n_dofs();
+    }
+    stage(context,
+          std::to_string(problem_sizes.n_dofs) + " DOFs; detecting contacts");
+    {
+      const auto timer = section(context, "contact detection");
+      state->contacts  = detect_contacts(state->discretisation.dof_handler,
+                                        parameters.boundary.signorini_fraction,
+                                        problem_sizes.gap,
+                                        coincidence_tolerance());
+    }
+    {
+      const auto        timer    = section(context, "change of variables");
+      const ContactSet &contacts = state->contacts;
+      // Only cycles among constrained DOFs can fail, so the constraint list
+      // names every DOF an error message needs.
+      auto describe = [&contacts](const DofIndex dof) {
+        for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
+          if (contacts.constraints[k].lower == dof ||
+              (contacts.constraints[k].kind != ConstraintKind::signorini &&
+               contacts.constraints[k].upper == dof))
+            return "the node at " +
+                   describe_point(contacts.position[k][0],
+                                  contacts.position[k][1],
+                                  contacts.constraints[k].lower == dof ?
+                                    contacts.blocks[k][0] :
+                                    contacts.blocks[k][1]);
+        return "DOF " + std::to_string(dof);
+      };
+      state->change = std::make_unique<ChangeOfVariables>(problem_sizes.n_dofs,
+                                                          contacts.dirichlet,
+                                                          contacts.constraints,
+                                                          describe);
+    }
+    const ContactSet &contacts         = state->contacts;
+    problem_sizes.n_dirichlet          = contacts.n_dirichlet;
+    problem_sizes.n_unknowns           = state->change->n_unknowns();
+    problem_sizes.n_constraints        = state->change->n_constraints();
+    problem_sizes.n_signorini          = contacts.n_signorini;
+    problem_sizes.n_horizontal_joint   = contacts.n_horizontal_joint;
+    problem_sizes.n_vertical_joint     = contacts.n_vertical_joint;
+    problem_sizes.max_expansion_length = state->change->max_expansion_length();
+    stage(context,
+          "n = " + std::to_string(problem_sizes.n_unknowns) +
+            " unknowns, n_c = " + std::to_string(problem_sizes.n_constraints) +
+            " constraints");
+  }
+
+  const Sizes &
+  MasonryScene::set_up(RunContext &context)
+  {
+    {
+      const auto timer = section(context, "make grid");
+      make_grid();
+    }
+    stage(context,
+          std::to_string(problem_sizes.n_blocks) + " blocks, " +
+            std::to_string(problem_sizes.n_cells) + " cells");
+    setup_system(context);
+    return problem_sizes;
+  }
+
+  void
+  MasonryScene::assemble_system()
+  {
+    LoadData loads;
+    loads.classes        = parameters.materials.classes;
+    loads.class_of_block = state->class_of_block;
+    loads.gravity        = parameters.boundary.gravity;
+    loads.top_traction   = parameters.boundary.top_traction;
+    loads.y_top          = state->layout.bounding_box().y1;
+    loads.tolerance      = coincidence_tolerance();
+    state->problem       = assemble_lcp(state->discretisation,
+                                  *state->change,
+                                  state->contacts,
+                                  loads);
+  }
+
+  lcp::Report
+  MasonryScene::solve(RunContext &context)
+  {
+    return unilateral::solve(context, *this, state->problem, state->solution);
+  }
+
+  // u = C~^-1 u~, and for every constraint its normal gap (the gap variable,
+  // or u_y + g on Gamma_S), its force lambda and whether it is active.
+  void
+  MasonryScene::recover_physical_solution()
+  {
+    const lcp::Solution &solution = state->solution;
+    state->displacement = state->change->to_physical(solution.u.data());
+
+    std::vector<char> active(state->problem.size(), 0);
+    for (const lcp::Index i : solution.active_set)
+      active[i] = 1;
+    const ContactSet &contacts = state->contacts;
+    constraints.resize(contacts.constraints.size());
+    n_closed_contacts = 0;
+    for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
+      {
+        const int v    = state->change->variable_of_constraint(k);
+        constraints[k] = {contacts.constraints[k].kind,
+                          contacts.position[k],
+                          contacts.blocks[k],
+                          solution.u[v] - contacts.constraints[k].bound,
+                          solution.lambda[v],
+                          active[v] != 0};
+        n_closed_contacts += active[v];
+      }
+
+    // Largest nodal displacement: pair the two components of each node.
+    const dealii::DoFHandler<2> &dof_handler =
+      state->discretisation.dof_handler;
+    const dealii::FiniteElement<2> &fe  = dof_handler.get_fe();
+    const unsigned int n_nodes_per_cell = fe.base_element(0).n_dofs_per_cell();
+    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    double                                       largest = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int k = 0; k < n_nodes_per_cell; ++k)
+          largest = std::max(
+            largest,
+            std::hypot(
+              state->displacement[dofs[fe.component_to_system_index(0, k)]],
+              state->displacement[dofs[fe.component_to_system_index(1, k)]]));
+      }
+    max_displacement = largest;
+  }
+
+  std::vector<NodalDisplacement>
+  MasonryScene::nodal_displacements() const
+  {
+    const dealii::DoFHandler<2> &dof_handler =
+      state->discretisation.dof_handler;
+    const dealii::FiniteElement<2> &fe      = dof_handler.get_fe();
+    const dealii::Mapping<2>       &mapping = *state->discretisation.mapping;
+    const auto &unit_points = fe.base_element(0).get_unit_support_points();
+    const unsigned int n_nodes_per_cell = unit_points.size();
+    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<char>                            seen(dof_handler.n_dofs(), 0);
+    std::vector<NodalDisplacement>               result;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int k = 0; k < n_nodes_per_cell; ++k)
+          {
+            const auto dof_x = dofs[fe.component_to_system_index(0, k)];
+            const auto dof_y = dofs[fe.component_to_system_index(1, k)];
+            if (seen[dof_x])
+              continue;
+            seen[dof_x] = 1;
+            const dealii::Point<2> p =
+              mapping.transform_unit_to_real_cell(cell, unit_points[k]);
+            result.push_back(
+              {{{p[0], p[1]}},
+               cell->material_id(),
+               {{state->displacement[dof_x], state->displacement[dof_y]}}});
+          }
+      }
+    return result;
+  }
+
+  void
+  MasonryScene::print_summary(std::ostream      &out,
+                              const lcp::Report &report) const
+  {
+    const auto   flags     = out.flags();
+    const auto   precision = out.precision();
+    const Sizes &s         = problem_sizes;
+    out << "  masonry: " << state->layout.name
+        << ", m = " << parameters.geometry.m << " (H = " << s.block_height
+        << "), " << s.n_blocks << " blocks, "
+        << to_string(parameters.geometry.element) << " on " << s.n_cells
+        << " cells (refinement " << parameters.geometry.refinement
+        << ", h = " << s.cell_size << ")\n"
+        << "  supports: " << s.n_dirichlet << " Dirichlet DOFs, "
+        << s.n_signorini << " Signorini nodes with gap g = " << s.gap
+        << "; joints: " << s.n_horizontal_joint << " horizontal + "
+        << s.n_vertical_joint << " vertical node pairs\n";
+    print_solver_summary(out, state->problem, report);
+    out << std::scientific << std::setprecision(6) << "  max displacement "
+        << max_displacement << ", " << n_closed_contacts << " of "
+        << s.n_constraints << " contacts closed\n";
+    out.flags(flags);
+    out.precision(precision);
+  }
+
+  void
+  MasonryScene::write_summary_file(const RunContext  &context,
+                                   const lcp::Report &report) const
+  {
+    JsonObject summary =
+      summary_base(context, "masonry", state->problem, report);
+    const Sizes &s = problem_sizes;
+    summary.set("geometry", state->layout.name)
+      .set("m", parameters.geometry.m)
+      .set("n_blocks", s.n_blocks)
+      .set("refinement", parameters.geometry.refinement)
+      .set("element", to_string(parameters.geometry.element))
+      .set("block_height", s.block_height)
+      .set("cell_size", s.cell_size)
+      .set("gap", s.gap)
+      .set("relative_gap", parameters.boundary.relative_gap)
+      .set("n_cells", s.n_cells)
+      .set("n_dofs", s.n_dofs)
+      .set("n_dirichlet", s.n_dirichlet)
+      .set("n_signorini", s.n_signorini)
+      .set("n_horizontal_joint", s.n_horizontal_joint)
+      .set("n_vertical_joint", s.n_vertical_joint)
+      .set("max_displacement", max_displacement)
+      .set("n_closed_contacts", n_closed_contacts);
+    unilateral::write_summary(context, summary);
+  }
+
+  lcp::Report
+  MasonryScene::run(RunContext &context)
+  {
+    set_up(context);
+
+    stage(context, "assembling A~ and b~ in the gap variables");
+    {
+      const auto timer = section(context, "assembly");
+      assemble_system();
+    }
+    {
+      const auto timer = section(context, "check LCP");
+      lcp::check_and_normalise(state->problem);
+    }
+    export_lcp_if_requested(context, state->problem);
+
+    const lcp::Report report = solve(context);
+    {
+      const auto timer = section(context, "recover solution");
+      recover_physical_solution();
+    }
+    if (context.write_vtu)
+      {
+        stage(context, "writing VTU/PVD");
+        const auto timer = section(context, "output");
+        output_results(context);
+      }
+
+    if (context.out != nullptr)
+      print_summary(*context.out, report);
+    write_summary_file(context, report);
+    return report;
+  }
+
+  UNILATERAL_REGISTER_SCENE(
+    MasonryScene,
+    "masonry",
+    "a wall of elastic blocks in frictionless contact (Ainsworth & Mihai "
+    "2006): stack bond, running bond or laminae")
+} // namespace unilateral::masonry

@@ -1,0 +1,158 @@
+// The masonry scene through the application, as a user runs it:
+//  1. bad input gives exit code 1 and one line naming the parameter, the
+//     value and the fix (printed here: code and message);
+//  2. two runs write VTU/PVD and summary.json, which read_masonry_vtu.py
+//     reads back with VTK's XML reader (what ParaView sees) and checks
+//     against the exact column solution (laminae, gap 0, P2) and for a
+//     settling running bond with two materials (Q2).
+#include <unilateral/application.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  // Run the application on a parameter file holding @p text; return the exit
+  // code, keep the error stream.
+  int
+  run(const std::string &name, const std::string &text, std::string &error)
+  {
+    const std::string file = name + ".prm";
+    std::ofstream(file) << text;
+    std::vector<std::string> arguments = {"unilateral", file};
+    char              *argv[] = {arguments[0].data(), arguments[1].data()};
+    std::ostringstream out, err;
+    const int          code = unilateral::run_application(2, argv, out, err);
+    error                   = err.str();
+    return code;
+  }
+
+  std::string
+  masonry_prm(const std::string &masonry_lines,
+              const std::string &other_lines = "",
+              const bool         vtu         = false)
+  {
+    return "set Scene = masonry\n"
+           "subsection Output\n  set Directory = results\n"
+           "  set Print timings = false\n  set Progress = false\n"
+           "  set Write VTU = " +
+           std::string(vtu ? "true" : "false") +
+           "\nend\n"
+           "subsection Masonry\n" +
+           masonry_lines + "end\n" + other_lines;
+  }
+
+  void
+  bad_input(const std::string &what, const std::string &text)
+  {
+    std::string error;
+    const int   code = run("bad_input", text, error);
+    std::cout << what << ": exit code " << code << ", " << error;
+    if (error.empty() || error.find('\n') != error.size() - 1)
+      std::cout << "  (expected exactly one line)\n";
+  }
+
+  void
+  check_vtu(const std::string &name, const std::string &mode)
+  {
+    const std::string command = "/usr/bin/python3 " SOURCE_DIR
+                                "/read_masonry_vtu.py results/" +
+                                name + " " + mode + " 2>&1";
+    FILE *pipe = popen(command.c_str(), "r");
+    if (pipe == nullptr)
+      {
+        std::cout << "cannot run " << command << "\n";
+        return;
+      }
+    std::array<char, 512> line;
+    while (fgets(line.data(), line.size(), pipe) != nullptr)
+      std::cout << "  " << line.data();
+    std::cout << "  read_masonry_vtu.py exit status " << pclose(pipe) << "\n";
+  }
+} // namespace
+
+int
+main()
+{
+  std::cout << "Bad input:\n";
+  bad_input("m = 0", masonry_prm("  set Blocks per side = 0\n"));
+  bad_input("m = -3", masonry_prm("  set Blocks per side = -3\n"));
+  bad_input("r = -1", masonry_prm("  set Refinement = -1\n"));
+  bad_input("g < 0",
+            masonry_prm("  subsection Boundary conditions\n"
+                        "    set Relative gap = -0.1\n  end\n"));
+  bad_input("nu = 0.5",
+            masonry_prm("  subsection Materials\n"
+                        "    set Poisson's ratio = 0.5\n  end\n"));
+  bad_input("nu = -1",
+            masonry_prm("  subsection Materials\n"
+                        "    set Poisson's ratio = -1\n  end\n"));
+  bad_input("E = 0",
+            masonry_prm("  subsection Materials\n"
+                        "    set Young's modulus = 0\n  end\n"));
+  bad_input("E < 0 in the second class",
+            masonry_prm("  subsection Materials\n"
+                        "    set Young's modulus = 4e3, -1\n"
+                        "    set Poisson's ratio = 0.3, 0.3\n"
+                        "    set Density = 1, 1\n"
+                        "    set Assignment = cyclic\n  end\n"));
+  bad_input("material lists of different lengths",
+            masonry_prm("  subsection Materials\n"
+                        "    set Young's modulus = 4e3, 2e3\n"
+                        "    set Assignment = cyclic\n  end\n"));
+  bad_input("two classes with rule 'single'",
+            masonry_prm("  subsection Materials\n"
+                        "    set Young's modulus = 4e3, 2e3\n"
+                        "    set Poisson's ratio = 0.3, 0.3\n"
+                        "    set Density = 1, 1\n  end\n"));
+  bad_input("unknown geometry",
+            masonry_prm("  set Geometry = herringbone bond\n"));
+  bad_input("unknown solver",
+            masonry_prm("",
+                        "subsection Solver\n  set Method = simplex\nend\n"));
+  {
+    std::vector<std::string> arguments = {"unilateral", "no_such_file.prm"};
+    char              *argv[] = {arguments[0].data(), arguments[1].data()};
+    std::ostringstream out, err;
+    const int          code = unilateral::run_application(2, argv, out, err);
+    std::cout << "missing parameter file: exit code " << code << ", "
+              << err.str();
+  }
+
+  std::cout << "Patch test output (laminae, m = 4, g = 0, P2):\n";
+  std::string error;
+  std::cout << "  exit code "
+            << run("patch",
+                   masonry_prm("  set Geometry = laminae\n"
+                               "  set Blocks per side = 4\n"
+                               "  set Element = P2\n"
+                               "  subsection Boundary conditions\n"
+                               "    set Relative gap = 0\n  end\n",
+                               "",
+                               true),
+                   error)
+            << error << "\n";
+  check_vtu("patch", "patch");
+
+  std::cout << "Settling running bond (m = 4, g = H/2, two materials, Q2):\n";
+  std::cout << "  exit code "
+            << run("settle",
+                   masonry_prm("  set Geometry = running bond\n"
+                               "  set Blocks per side = 4\n"
+                               "  subsection Materials\n"
+                               "    set Young's modulus = 4e3, 1e3\n"
+                               "    set Poisson's ratio = 0.3, 0.25\n"
+                               "    set Density = 1, 2\n"
+                               "    set Assignment = alternating courses\n"
+                               "  end\n",
+                               "",
+                               true),
+                   error)
+            << error << "\n";
+  check_vtu("settle", "settle");
+}

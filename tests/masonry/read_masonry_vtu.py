@@ -1,0 +1,149 @@
+#!/usr/bin/python3
+"""Read a masonry run's output back with VTK's own XML readers (what ParaView
+sees) and print one verdict line per check.
+
+Usage: read_masonry_vtu.py RUN_DIRECTORY patch|settle
+
+  patch:  any geometry with gap 0 under self-weight (E = 4e3, nu = 0.3,
+          density 1): the exact column solution u_x = 0, sigma_yy = -(1 - y),
+          u_y(1) = -1/(2 (lambda + 2 mu)); every contact node below the top
+          is closed and carries the pressure 1 - y (horizontal joints, base)
+          or nu/(1 - nu) (1 - y) (vertical joints only).
+  settle: any run with gap g > 0: the settlement shows (min u_y <= -g),
+          gaps and pressures are nonnegative, active nodes are closed, nodes
+          with pressure are active.
+Both modes check the PVD record, the field names and sizes, the cell data
+and the agreement with summary.json.
+
+Run it with Debian's /usr/bin/python3 (python3-vtk9); a python without vtk
+fails at the import, which the calling test reports.
+"""
+import json
+import math
+import os
+import sys
+import xml.etree.ElementTree as ElementTree
+
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def verdict(text, condition):
+    print(f"{text}: {'yes' if condition else 'NO'}")
+
+
+def main():
+    directory, mode = sys.argv[1], sys.argv[2]
+    summary = json.load(open(os.path.join(directory, "summary.json")))
+
+    pvd = ElementTree.parse(os.path.join(directory, "solution.pvd"))
+    datasets = pvd.getroot().findall("./Collection/DataSet")
+    verdict("PVD lists one VTU file that exists",
+            len(datasets) == 1 and
+            os.path.isfile(os.path.join(directory, datasets[0].get("file"))))
+
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(directory, datasets[0].get("file")))
+    reader.Update()
+    grid = reader.GetOutput()
+    n_points, n_cells = grid.GetNumberOfPoints(), grid.GetNumberOfCells()
+    verdict("VTK reads points and cells", n_points > 0 and n_cells > 0)
+
+    point_data, cell_data = grid.GetPointData(), grid.GetCellData()
+    expected_points = {"displacement": 3, "stress": 9, "von_mises": 1,
+                       "contact_pressure": 1, "normal_gap": 1,
+                       "active_set": 1}
+    fields = {}
+    for name, components in expected_points.items():
+        array = point_data.GetArray(name)
+        ok = (array is not None and
+              array.GetNumberOfComponents() == components and
+              array.GetNumberOfTuples() == n_points)
+        verdict(f"point data '{name}' with {components} components", ok)
+        if ok:
+            fields[name] = vtk_to_numpy(array).astype(float)
+    cells = {}
+    for name in ("block_id", "material"):
+        array = cell_data.GetArray(name)
+        ok = (array is not None and array.GetNumberOfComponents() == 1 and
+              array.GetNumberOfTuples() == n_cells)
+        verdict(f"cell data '{name}'", ok)
+        if ok:
+            cells[name] = vtk_to_numpy(array)
+    if len(fields) < len(expected_points) or len(cells) < 2:
+        return
+
+    points = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
+    x, y = points[:, 0], points[:, 1]
+    u = fields["displacement"]
+    verdict("distinct block ids = n_blocks of summary.json",
+            len(set(cells["block_id"].tolist())) == summary["n_blocks"])
+    largest = max(math.hypot(a, b) for a, b in u[:, :2])
+    verdict("max |displacement| = max_displacement of summary.json",
+            abs(largest - summary["max_displacement"]) <=
+            1e-6 * summary["max_displacement"])
+    for key in ("geometry", "m", "n_blocks", "refinement", "gap", "element",
+                "max_displacement", "n_closed_contacts"):
+        if key not in summary:
+            verdict(f"summary.json has '{key}'", False)
+    active = fields["active_set"]
+    verdict("active_set is 0 or 1",
+            all(value in (0.0, 1.0) for value in active))
+
+    pressure, gap = fields["contact_pressure"], fields["normal_gap"]
+    if mode == "patch":
+        E, nu = 4e3, 0.3
+        lame = E * nu / ((1 + nu) * (1 - 2 * nu))
+        mu = E / (2 * (1 + nu))
+        scale = 0.5 / (lame + 2 * mu)
+        verdict("u_x = 0 everywhere", max(abs(u[:, 0])) <= 1e-6 * scale)
+        top = [i for i in range(n_points) if abs(y[i] - 1) < 1e-9]
+        verdict("u_y = -1/(2 (lambda + 2 mu)) on the top",
+                len(top) > 0 and
+                all(abs(u[i, 1] + scale) <= 1e-5 * scale for i in top))
+        stress = fields["stress"]
+        verdict("stress_yy = -(1 - y), stress_xy = 0",
+                all(abs(stress[i, 4] + (1 - y[i])) <= 1e-5 and
+                    abs(stress[i, 1]) <= 1e-5 for i in range(n_points)))
+        von_mises = (1 - 2 * nu) / (1 - nu)
+        verdict("von_mises = (1 - 2 nu)/(1 - nu) (1 - y)",
+                all(abs(fields["von_mises"][i] - von_mises * (1 - y[i]))
+                    <= 1e-5 for i in range(n_points)))
+        # Horizontal joints and the Signorini base carry sigma_yy = -(1 - y);
+        # nodes only on vertical joints carry sigma_xx = nu/(1 - nu) sigma_yy;
+        # the output shows the larger at block corners.
+        H = summary["block_height"]
+
+        def expected_pressure(i):
+            on_course_line = abs(y[i] / H - round(y[i] / H)) < 1e-6
+            horizontal = on_course_line and (y[i] > 1e-9 or x[i] < 0.5)
+            return (1 - y[i]) * (1.0 if horizontal else nu / (1 - nu))
+        contact = [i for i in range(n_points)
+                   if active[i] == 1 and y[i] < 1 - 1e-9]
+        verdict("contact nodes below the top: pressure = -sigma_nn, gap = 0",
+                len(contact) > 0 and
+                all(abs(pressure[i] - expected_pressure(i)) <= 1e-5 and
+                    abs(gap[i]) <= 1e-9 for i in contact))
+        base_signorini = [i for i in range(n_points)
+                          if abs(y[i]) < 1e-9 and x[i] < 0.5 - 1e-9]
+        verdict("every base node left of x = 0.5 is an active contact",
+                len(base_signorini) > 0 and
+                all(active[i] == 1 for i in base_signorini))
+    else:
+        g = summary["gap"]
+        verdict(f"settlement shows: min u_y <= -g = {-g}",
+                min(u[:, 1]) <= -g)
+        verdict("normal gaps >= 0 and pressures >= 0",
+                min(gap) >= -1e-9 and min(pressure) >= -1e-9)
+        verdict("active nodes are closed (gap 0)",
+                all(abs(gap[i]) <= 1e-9 for i in range(n_points)
+                    if active[i] == 1))
+        verdict("nodes with pressure are active",
+                all(active[i] == 1 for i in range(n_points)
+                    if pressure[i] > 1e-6 * max(pressure)))
+        verdict("both material classes present",
+                sorted(set(cells["material"].tolist())) == [0, 1])
+
+
+if __name__ == "__main__":
+    main()
