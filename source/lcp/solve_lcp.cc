@@ -156,33 +156,51 @@ namespace unilateral::lcp
 
       // Stage 2: the projection, PDAS on A from the approximate solution.
       // If u_eps is far from the answer (a large eps), PDAS on A may meet an
-      // active set that leaves a body unsupported, a singular system. Then
-      // continue in eps: PDAS on A + eps_k d I with eps_k falling by 1e3 per
-      // stage, each warm-started from the last, and A again at the end.
+      // active set that leaves a body unsupported (a singular system) or
+      // wander without settling. Then continue in eps: PDAS on A + eps_k d I
+      // with eps_k falling by 1e3 per stage, each warm-started from the
+      // last, and A again after each stage. A projection that has not
+      // settled in 50 iterations counts as wandering while a stage is left.
       PhaseTimer   timer(report, "projection");
       const double mean_diagonal =
         problem.size() > 0 && problem.A.diagonal().mean() > 0 ?
           problem.A.diagonal().mean() :
           1.0;
-      double   eps_k = regularise ? report.regularisation : 0.0;
-      Solution start = solution;
-      Report   projection;
+      // A method that ran on A itself (pdpc, interior_point) continues from
+      // the scene's regularisation.
+      double eps_k = regularise ? report.regularisation :
+                                  1e3 * std::max(auto_regularisation, 1e-12) *
+                                    mean_diagonal;
+      const double     last_eps = 1e-14 * mean_diagonal;
+      SolverParameters projection_parameters = parameters;
+      Solution         start                 = solution;
+      Report           projection;
       for (;;)
         {
+          const bool stage_left = eps_k * 1e-3 >= last_eps;
+          projection_parameters.max_iterations =
+            stage_left ? std::min(parameters.max_iterations > 0 ?
+                                    parameters.max_iterations :
+                                    50u,
+                                  50u) :
+                         parameters.max_iterations;
           projection = Report();
           solution   = start;
           run_method(SolverRegistry::get("pdas"),
                      problem,
-                     parameters,
+                     projection_parameters,
                      solution,
                      projection,
                      progress);
           report.projection_iterations += projection.iterations;
           merge_counters(report.counters, projection.counters);
-          eps_k *= 1e-3;
-          if (projection.status != Status::singular ||
-              eps_k < 1e-14 * mean_diagonal)
+          if (projection.converged() || !stage_left)
             break;
+          eps_k *= 1e-3;
+          if (progress != nullptr)
+            *progress << "    projection: " << projection.message
+                      << "; continuing with eps = " << eps_k / mean_diagonal
+                      << " (relative)" << std::endl;
           // One continuation stage on A + eps_k d I.
           Problem shifted = problem;
           for (Index j = 0; j < shifted.size(); ++j)

@@ -104,6 +104,26 @@ namespace unilateral::lcp
                         "for an obstacle touched on a third of its nodes is "
                         "worse (34 instead of 24). 'auto': the scene's "
                         "choice, 'all active' for masonry, 'zero' otherwise.");
+      prm.declare_entry(
+        "Round-off tolerance",
+        "1e-12",
+        Double(0, 1e-3),
+        "An index changes side only if it violates it by more than this "
+        "times the magnitude of the terms of its multiplier, sum_j |A_ij u_j| "
+        "+ |b_i| (the slack in the same units). Without it, a closed contact "
+        "carrying exactly zero force (the top of a wall's vertical joints, an "
+        "obstacle node touched with no pressure) flips sides on round-off and "
+        "PDAS never stops. 0 compares exactly, as the paper.");
+      prm.declare_entry(
+        "Safeguard",
+        "10",
+        Integer(0),
+        "The finite-termination safeguard of Judice & Pires: after this many "
+        "iterations without fewer violated indices than the best so far, "
+        "change one index at a time (Murty's least-index rule) until there "
+        "are fewer. Plain PDAS can wander without settling when A is not an "
+        "M-matrix (running bond walls with a large gap). 0: the paper's PDAS "
+        "without it.");
       prm.leave_subsection();
 
       prm.enter_subsection("PDPC");
@@ -229,6 +249,8 @@ namespace unilateral::lcp
 
       prm.enter_subsection("PDAS");
       pdas.tau              = prm.get_double("Tau");
+      pdas.round_off        = prm.get_double("Round-off tolerance");
+      pdas.safeguard        = prm.get_integer("Safeguard");
       const std::string start = prm.get("Start");
       pdas.start = start == "zero"       ? PdasStart::zero :
                    start == "all active" ? PdasStart::all_active :

@@ -53,6 +53,16 @@ namespace unilateral::lcp
     {
       double    tau   = 1e-3;
       PdasStart start = PdasStart::automatic;
+      /// Relative rounding tolerance of the active-set test: an index moves
+      /// only if it violates its side by more than this times the size of
+      /// the terms of its multiplier (a closed contact with zero force can
+      /// otherwise flip sides on round-off forever).
+      double round_off = 1e-12;
+      /// Judice-Pires safeguard: after this many iterations without fewer
+      /// violations than the best so far, change one index at a time by
+      /// Murty's least-index rule until there are fewer (finite termination
+      /// for positive definite A). 0 switches it off (the paper's PDAS).
+      unsigned int safeguard = 10;
     } pdas;
 
     struct

@@ -6,12 +6,18 @@
  *   Step 3: stop if iter >= 1 and SZ did not change (then u_SZ = l_SZ,
  *           lambda_SP = 0, and the new sets certify feasibility)
  *   Step 4: solve A_FF u_F = b_F - A_F,SZ l_SZ with u_SZ = l_SZ.
+ * Two safeguards the paper does not have (both can be switched off): the
+ * test of Step 2 has a rounding tolerance, so degenerate indices (at the
+ * bound with zero multiplier) do not flip sides forever, and when the number
+ * of violated indices stops falling, Judice & Pires' single-pivot rule takes
+ * over until it falls again, which makes the method terminate.
  * The same routine is the projection step when run on A from u_eps.
  */
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/solver.h>
 
 #include <algorithm>
+#include <cmath>
 #include <ostream>
 
 namespace unilateral::lcp
@@ -60,22 +66,44 @@ namespace unilateral::lcp
                 return;
               }
           }
-        const unsigned int limit = iteration_limit(500);
+        // Ties go to the active side: before the first test every index
+        // counts as active, so an index at its bound with a zero multiplier
+        // (up to round-off) stays there. An active degenerate contact costs
+        // nothing; an inactive one can leave a body unsupported.
+        active = problem.constrained_mask();
+
+        const unsigned int limit     = iteration_limit(500);
+        const unsigned int safeguard = parameters.pdas.safeguard;
+        Index              fewest_violations = problem.n_constrained() + 1;
+        unsigned int       without_progress  = 0;
         for (unsigned int iteration = 0;; ++iteration)
           {
             const Vector lambda = problem.A * u - problem.b;
             ++report.counters.matrix_vector_products;
-            std::vector<char> new_active(n, 0);
-            unsigned int      n_active = 0, n_changes = 0;
+
+            // Step 2 with a rounding tolerance: index i changes side only if
+            // u_i - l_i - tau lambda_i is beyond +-tolerance_i, the rounding
+            // error of lambda_i (and of the slack, lambda_i / A_ii) at the
+            // size of its terms.
+            std::vector<Index> violated;
             for (Index k = 0; k < problem.n_constrained(); ++k)
               {
-                const Index i = problem.constrained[k];
-                new_active[i] =
-                  (u[i] - problem.lower_bound[k]) - tau * lambda[i] < 0;
-                n_active += new_active[i];
-                n_changes += (new_active[i] != active[i]);
+                const Index  i = problem.constrained[k];
+                double       magnitude = std::abs(problem.b[i]);
+                const double diagonal  = problem.A.coeff(i, i);
+                for (SparseMatrix::InnerIterator entry(problem.A, i); entry; ++entry)
+                  magnitude += std::abs(entry.value() * u[entry.row()]);
+                const double tolerance =
+                  parameters.pdas.round_off * magnitude *
+                  ((diagonal > 0 ? 1.0 / diagonal : 0.0) + tau);
+                const double test =
+                  (u[i] - problem.lower_bound[k]) - tau * lambda[i];
+                const bool now_active =
+                  active[i] ? test < tolerance : test < -tolerance;
+                if (now_active != static_cast<bool>(active[i]))
+                  violated.push_back(i);
               }
-            if (iteration >= 1 && n_changes == 0)
+            if (iteration >= 1 && violated.empty())
               {
                 report.status = Status::converged;
                 break;
@@ -86,14 +114,37 @@ namespace unilateral::lcp
                 report.message = "PDAS did not settle on an active set in " +
                                  std::to_string(limit) +
                                  " iterations (last change: " +
-                                 std::to_string(n_changes) + " indices)";
+                                 std::to_string(violated.size()) + " indices)";
                 break;
               }
-            active.swap(new_active);
 
+            // Step 3, safeguarded (Judice & Pires): every violated index
+            // changes side while their number falls often enough; otherwise
+            // only the least one (Murty's rule, finite for definite A).
+            const Index n_violated = static_cast<Index>(violated.size());
+            bool        single     = false;
+            if (iteration >= 1 && safeguard > 0)
+              {
+                if (n_violated < fewest_violations)
+                  {
+                    fewest_violations = n_violated;
+                    without_progress  = 0;
+                  }
+                else
+                  single = ++without_progress > safeguard;
+              }
+            if (single)
+              violated.resize(1); // the constrained indices are sorted
+            for (const Index i : violated)
+              active[i] = !active[i];
+
+            Index n_active = 0;
             for (Index k = 0; k < problem.n_constrained(); ++k)
               if (active[problem.constrained[k]])
-                u[problem.constrained[k]] = problem.lower_bound[k];
+                {
+                  u[problem.constrained[k]] = problem.lower_bound[k];
+                  ++n_active;
+                }
             if (!system.solve(active, problem.b, u))
               {
                 report.status = Status::singular;
@@ -105,11 +156,13 @@ namespace unilateral::lcp
                 break;
               }
             report.iterations = iteration + 1;
-            solution.factor = system.factor();
+            solution.factor   = system.factor();
             if (progress != nullptr)
               *progress << "    pdas iteration " << iteration + 1
                         << ": active set " << n_active << ", changed "
-                        << n_changes << std::endl;
+                        << violated.size()
+                        << (single ? " (safeguard: least index)" : "")
+                        << std::endl;
           }
       }
     };
