@@ -1,5 +1,6 @@
 #include <unilateral/lcp/sparse_cholesky.h>
 
+
 #include <cholmod.h>
 
 #include <stdexcept>
@@ -135,6 +136,15 @@ namespace unilateral::lcp
                          impl.factor->minor == impl.factor->n);
     if (impl.common.status == CHOLMOD_OUT_OF_MEMORY)
       throw std::runtime_error("CHOLMOD factorisation ran out of memory");
+    // A factorisation that completes can still be numerically singular: a
+    // body held by no constraint leaves a pivot at round-off, and the solve
+    // then moves it by 1e10 with a backward error that looks perfect. Such
+    // a factor is refused (CHOLMOD's estimate: (min L_ii / max L_ii)^2).
+    if (impl.factor_valid)
+      {
+        last_rcond = cholmod_rcond(impl.factor, &impl.common);
+        impl.factor_valid = last_rcond > minimum_rcond;
+      }
     return impl.factor_valid;
   }
 

@@ -70,6 +70,12 @@ namespace unilateral::lcp
     double
     factor_nonzeros() const;
 
+    /// CHOLMOD's reciprocal condition estimate of the last factorisation.
+    double last_rcond = 0;
+
+    /// A factor with a smaller estimate counts as singular.
+    static constexpr double minimum_rcond = 1e-14;
+
   private:
     struct Implementation;
     std::unique_ptr<Implementation> implementation;

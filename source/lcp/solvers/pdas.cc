@@ -38,7 +38,10 @@ namespace unilateral::lcp
         const Index  n   = problem.size();
         const double tau = parameters.pdas.tau;
         Vector      &u   = solution.u;
-        if (u.size() != n)
+        // A given iterate (the projection step's u_eps, a warm start) is the
+        // start; the 'Start' parameter only chooses when none is given.
+        const bool start_given = u.size() == n;
+        if (!start_given)
           {
             // u0 = 0, moved onto the feasible set.
             u = Vector::Zero(n);
@@ -52,7 +55,7 @@ namespace unilateral::lcp
         ActiveSetSystem   system(problem.A, report.counters, solution.factor);
         std::vector<char> active(n, 0);
         if (parameters.pdas.start == SolverParameters::PdasStart::all_active &&
-            solution.factor == nullptr)
+            !start_given)
           {
             // u0: the minimiser with every constraint at its bound.
             active = problem.constrained_mask();

@@ -91,6 +91,14 @@ namespace unilateral::masonry
       return 1e-9;
     }
 
+    /// A wall is in contact almost everywhere: PDAS starts with every
+    /// constraint active (at m = 225 stack bond: 7 iterations instead of 11).
+    bool
+    auto_pdas_start_all_active() const override
+    {
+      return true;
+    }
+
     /**
      * make_grid and setup_system only: n and n_c without assembling or
      * solving (for the Table 2 counts). Timer sections go to
