@@ -113,11 +113,11 @@ def masonry(geometry="stack bond", m=5, relative_gap=0.5, E=4e3, nu=0.3,
             "Masonry/Blocks per side": m,
             "Masonry/Refinement": refinement,
             "Masonry/Boundary conditions/Relative gap": repr(relative_gap),
-            "Masonry/Boundary conditions/Gravity": repr(gravity),
+            "Masonry/Boundary conditions/Gravity": repr(float(gravity)),
             "Masonry/Boundary conditions/Top traction":
                 f"{traction[0]!r}, {traction[1]!r}",
-            "Masonry/Materials/Young's modulus": repr(E),
-            "Masonry/Materials/Poisson's ratio": repr(nu)}
+            "Masonry/Materials/Young's modulus": repr(float(E)),
+            "Masonry/Materials/Poisson's ratio": repr(float(nu))}
 
 
 def plate(n=20, E=21000.0, nu=0.28, thickness=2.0, obstacle="psi3",
@@ -196,7 +196,7 @@ def build_cases(mode):
                 if s != "graves_sc" or m <= 5]
 
     # 1. eps from 1e-2 to 1e-14 (regularisation A + eps d I + projection)
-    epsilons = ([1e-2, 1e-6, 1e-10, 1e-14] if quick else
+    epsilons = ([1e-2, 1e-14] if quick else
                 [1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14])
     for geometry in geometries:
         for m in m_values:
@@ -254,7 +254,7 @@ def build_cases(mode):
     # 3. nu up to 0.499
     nus = [0.499] if quick else [0.45, 0.49, 0.499]
     for nu in nus:
-        for geometry in geometries:
+        for geometry in geometries[:1 if quick else 3]:
             top, energy = column(4e3, nu, 1.0, 0.0)
             for solver in masonry_solvers(5):
                 cases.append(Case(
@@ -315,7 +315,7 @@ def build_cases(mode):
                     ref(settings, min_displacement=0.5 / m)))
 
     # 6. loads that close all contacts and loads that close none
-    for geometry in geometries:
+    for geometry in geometries[:1 if quick else 3]:
         traction = (0.0, -100.0)
         top, energy = column(4e3, 0.3, 1.0, traction[1])
         for solver in masonry_solvers(5):
@@ -367,8 +367,12 @@ def build_cases(mode):
             "Solver/PDPC/Diagonal scaling": "false",
             "Solver/Projection": "false"},
     }
+    if quick:
+        variants = {k: v for k, v in variants.items()
+                    if k in ("printed step",
+                             "printed step, unscaled, no projection")}
     problems = []
-    for geometry in geometries:
+    for geometry in geometries[:1 if quick else 3]:
         settings = masonry(geometry, 5)
         problems.append((f"{geometry} m=5 g=H/2", settings, ref(settings)))
         problems.append((f"{geometry} m=5 g=0",
@@ -674,6 +678,8 @@ def main():
                         help="only the large-mesh cases")
     parser.add_argument("--with-large", action="store_true")
     parser.add_argument("--only", default=None)
+    parser.add_argument("--list", action="store_true",
+                        help="print the cases and runs, run nothing")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--reuse", action="store_true",
                         help="reuse a run whose parameter file is unchanged "
@@ -722,6 +728,11 @@ def main():
                     settings.update(solver_settings(solver))
                     reference_runs[rkey].append((solver, add_run(settings)))
 
+    if arguments.list:
+        for case in cases:
+            print(case.id)
+        print(f"{mode}: {len(cases)} cases, {len(runs)} runs")
+        return 0
     runs_directory = os.path.join(arguments.output, "runs")
     os.makedirs(runs_directory, exist_ok=True)
     print(f"{mode}: {len(cases)} cases, {len(runs)} runs", flush=True)
