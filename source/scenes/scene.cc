@@ -2,7 +2,9 @@
 #include <unilateral/lcp/io.h>
 #include <unilateral/scenes/scene.h>
 
+#include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <ostream>
 
 namespace unilateral
@@ -65,11 +67,49 @@ namespace unilateral
         scene.auto_pdas_start_all_active() ?
           lcp::SolverParameters::PdasStart::all_active :
           lcp::SolverParameters::PdasStart::zero;
-    return lcp::solve_lcp(problem,
-                          parameters,
-                          solution,
-                          context.progress,
-                          scene.auto_regularisation());
+    lcp::Report report = lcp::solve_lcp(problem,
+                                        parameters,
+                                        solution,
+                                        context.progress,
+                                        scene.auto_regularisation());
+    check_work(problem, solution, report);
+    return report;
+  }
+
+  void
+  check_work(const lcp::Problem  &problem,
+             const lcp::Solution &solution,
+             lcp::Report         &report)
+  {
+    if (!report.converged() || solution.u.size() != problem.size())
+      return;
+    // At any solution u^T A u = b^T u + lambda^T u = b^T u + lambda_S^T l_S
+    // (lambda_E = 0 and complementarity), and u^T A u >= 0: the work
+    // W = b^T u - lambda_S^T l_S of the loads and the supports cannot be
+    // negative. The relative KKT residuals are blind to a body that drifted
+    // far away as a rigid motion (A u stays small where |A| |u| is huge),
+    // and W is not: such an answer has W close to -|b|^T |u|.
+    const lcp::Vector lambda = problem.A * solution.u - problem.b;
+    double            work   = problem.b.dot(solution.u);
+    double            scale  = problem.b.cwiseAbs().dot(solution.u.cwiseAbs());
+    for (lcp::Index k = 0; k < problem.n_constrained(); ++k)
+      {
+        const double product =
+          lambda[problem.constrained[k]] * problem.lower_bound[k];
+        work -= product;
+        scale += std::abs(product);
+      }
+    if (work < -1e-6 * scale)
+      {
+        std::ostringstream message;
+        message << std::setprecision(3) << "the answer fails the work check: "
+                << "b^T u - lambda_S^T l_S = " << work
+                << " < 0, but it equals u^T A u >= 0 at every solution (a "
+                   "body drifted away as a rigid motion?)";
+        report.status  = lcp::Status::inaccurate;
+        report.message = message.str() +
+                         (report.message.empty() ? "" : "; " + report.message);
+      }
   }
 
   JsonObject

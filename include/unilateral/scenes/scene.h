@@ -130,8 +130,21 @@ namespace unilateral
   }
 
   /**
+   * A safeguard on a converged answer: at every solution of the LCP the work
+   * W = b^T u - lambda_S^T l_S equals u^T A u >= 0. If W < -1e-6 (|b|^T |u|
+   * + |lambda_S|^T |l_S|), @p report becomes 'inaccurate' with a message.
+   * It catches what the relative KKT residuals cannot see: a body that
+   * drifted far away as a rigid motion (A u small, |A| |u| huge).
+   */
+  void
+  check_work(const lcp::Problem  &problem,
+             const lcp::Solution &solution,
+             lcp::Report         &report);
+
+  /**
    * Solve @p problem with the context's solver options, inside a timer
-   * section "solve", with the scene's automatic regularisation.
+   * section "solve", with the scene's automatic regularisation, then
+   * check_work().
    */
   lcp::Report
   solve(RunContext          &context,

@@ -83,6 +83,12 @@ namespace unilateral::masonry
     return state->solution;
   }
 
+  double
+  MasonryScene::force_unit() const
+  {
+    return unit;
+  }
+
   // The layout of the chosen bond and its mesh: every block meshed on its
   // own with cells of size h = H / 2^r, material_id = block index.
   void
@@ -236,7 +242,7 @@ namespace unilateral::masonry
                           contacts.position[k],
                           contacts.blocks[k],
                           solution.u[v] - contacts.constraints[k].bound,
-                          solution.lambda[v],
+                          solution.lambda[v] * unit,
                           active[v] != 0};
         n_closed_contacts += active[v];
       }
@@ -359,10 +365,28 @@ namespace unilateral::masonry
     {
       const auto timer = section(context, "check LCP");
       lcp::check_and_normalise(state->problem);
+      // The solvers' force unit (see force_unit()): their tolerances and
+      // parameters (PDAS's tau weighs a displacement against a force, the
+      // interior-point methods' tolerances and starting points are absolute)
+      // then see the same numbers whatever unit the parameter file uses. A
+      // change of units must not change the answer.
+      double largest_modulus = 0;
+      for (const MaterialClass &material : parameters.materials.classes)
+        largest_modulus = std::max(largest_modulus, material.youngs_modulus);
+      unit = largest_modulus / 4e3;
+      if (unit != 1 && unit > 0)
+        {
+          state->problem.A /= unit;
+          state->problem.b /= unit;
+        }
+      else
+        unit = 1;
     }
     export_lcp_if_requested(context, state->problem);
 
-    const lcp::Report report = solve(context);
+    lcp::Report report = solve(context);
+    report.energy *= unit;
+    report.regularisation *= unit;
     {
       const auto timer = section(context, "recover solution");
       recover_physical_solution();

@@ -132,13 +132,24 @@ namespace unilateral::masonry
     std::vector<NodalDisplacement>
     nodal_displacements() const;
 
-    /// After run(): the LCP that was solved.
+    /// After run(): the LCP that was solved, in the solver's force unit:
+    /// A and b are the assembled ones divided by force_unit().
     const lcp::Problem &
     problem() const;
 
-    /// After run(): the LCP solution (new variables, multipliers).
+    /// After run(): the LCP solution (new variables, multipliers; the
+    /// multipliers in the solver's force unit, like problem()).
     const lcp::Solution &
     solution() const;
+
+    /// The force unit of the LCP handed to the solvers: the largest Young's
+    /// modulus divided by 4e3 (the paper's E). A change of the force unit
+    /// (every E, density, gravity and traction times k) then hands the
+    /// solvers the same numbers, so it cannot change their answer; with the
+    /// paper's E it is 1 and nothing is scaled. Energies and forces are
+    /// reported in the units of the parameter file.
+    double
+    force_unit() const;
 
   private:
     void
@@ -180,6 +191,7 @@ namespace unilateral::masonry
     Sizes                         problem_sizes;
     std::vector<ConstraintResult> constraints;
     double                        max_displacement  = 0;
+    double                        unit              = 1;
     unsigned int                  n_closed_contacts = 0;
   };
 } // namespace unilateral::masonry
