@@ -1,0 +1,96 @@
+#!/bin/sh
+# Make the README pictures doc/pictures/*.png from scratch: install ParaView
+# if it is missing, build unilateral, run the four scenes of this folder
+# into output/pictures/ and render them offscreen with ParaView's pvpython.
+#
+#   benchmarks/pictures/render.sh        (from anywhere; Debian bookworm)
+#
+# Idempotent: installs only what is missing, reuses the build.
+set -eu
+
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+cd "$root"
+build=${BUILD_DIR:-build}
+if [ "$(id -u)" -eq 0 ]; then sudo=""; else sudo="sudo"; fi
+
+# --- ParaView -------------------------------------------------------------
+# Debian's paraview (5.11) brings pvbatch but not pvpython, which lives in
+# python3-paraview. That package conflicts with python3-vtk9, which
+# install.sh installs for the tests (both ship the Python module "vtk"), so
+# installing it would remove python3-vtk9 and the next install.sh would
+# remove it again. Unless python3-paraview is installed already, we unpack it
+# privately into $build-pvpython/ instead: its pvpython finds its own Python
+# modules next to itself, before the system's. ParaView here is built for X
+# only (no EGL or OSMesa), and --force-offscreen-rendering without a display
+# crashes, so pvpython runs under Xvfb.
+packages="paraview xvfb python3-numpy"
+missing=""
+for package in $packages; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null |
+      grep -q "install ok installed"; then
+    missing="$missing $package"
+  fi
+done
+if [ -n "$missing" ]; then
+  echo "render.sh: installing$missing (ParaView takes about 630 MB)"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq \
+    --no-install-recommends $missing
+fi
+
+if dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null |
+    grep -q "install ok installed"; then
+  pvpython=/usr/bin/pvpython
+else
+  version=$(dpkg-query -W -f='${Version}' paraview)
+  private="$root/$build-pvpython"
+  pvpython="$private/usr/bin/pvpython"
+  if [ "$(cat "$private/version" 2>/dev/null)" != "$version" ]; then
+    echo "render.sh: unpacking python3-paraview $version into $private"
+    rm -rf "$private"
+    mkdir -p "$private"
+    (cd "$private" &&
+     apt-get download -qq -o APT::Sandbox::User=root \
+       "python3-paraview=$version" &&
+     dpkg-deb -x python3-paraview_*.deb . &&
+     rm python3-paraview_*.deb)
+    echo "$version" > "$private/version"
+  fi
+fi
+
+# --- unilateral -------------------------------------------------------------
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  ./install.sh
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$build" -j2 --target unilateral
+
+# --- the runs: output/pictures/<run name>/ (a failed solve stops here) -----
+for scene in wall_stack_bond wall_running_bond wall_laminae plate_psi3; do
+  echo "render.sh: running benchmarks/pictures/$scene.prm"
+  "$build/unilateral" "benchmarks/pictures/$scene.prm" > /dev/null
+done
+
+# --- the pictures -----------------------------------------------------------
+# Our own Xvfb rather than xvfb-run -a, whose guess of a free display number
+# races with other X servers on a shared machine (seen once: "bad X server
+# connection"). With -displayfd the server picks a free number itself and
+# writes it once it accepts connections.
+echo "render.sh: rendering into doc/pictures/"
+display_file=$(mktemp)
+Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$display_file" &
+xvfb=$!
+trap 'kill $xvfb 2>/dev/null; rm -f "$display_file"' EXIT
+waited=0
+while [ ! -s "$display_file" ]; do
+  waited=$((waited + 1))
+  if [ $waited -gt 300 ] || ! kill -0 $xvfb 2>/dev/null; then
+    echo "render.sh: Xvfb did not start" >&2
+    exit 1
+  fi
+  sleep 0.1
+done
+DISPLAY=":$(cat "$display_file")" \
+  "$pvpython" "$here/render.py" output/pictures doc/pictures
+ls -l doc/pictures/*.png
