@@ -75,8 +75,9 @@ namespace unilateral::lcp
     for (const char f : fixed)
       n_fixed += f;
 
-    own->fixed          = fixed;
-    own->fixed_diagonal = fixed_diagonal;
+    own->fixed                   = fixed;
+    own->fixed_diagonal          = fixed_diagonal;
+    own->cholesky.minimum_rcond  = 1e-14;
     inherited.reset(); // our own factor is closer from now on
 
     if (n_fixed <= reduced_threshold * n)

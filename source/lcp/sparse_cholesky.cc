@@ -140,9 +140,9 @@ namespace unilateral::lcp
     // body held by no constraint leaves a pivot at round-off, and the solve
     // then moves it by 1e10 with a backward error that looks perfect. Such
     // a factor is refused (CHOLMOD's estimate: (min L_ii / max L_ii)^2).
-    if (impl.factor_valid)
+    if (impl.factor_valid && minimum_rcond > 0)
       {
-        last_rcond = cholmod_rcond(impl.factor, &impl.common);
+        last_rcond        = cholmod_rcond(impl.factor, &impl.common);
         impl.factor_valid = last_rcond > minimum_rcond;
       }
     return impl.factor_valid;

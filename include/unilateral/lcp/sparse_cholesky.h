@@ -73,8 +73,11 @@ namespace unilateral::lcp
     /// CHOLMOD's reciprocal condition estimate of the last factorisation.
     double last_rcond = 0;
 
-    /// A factor with a smaller estimate counts as singular.
-    static constexpr double minimum_rcond = 1e-14;
+    /// A factor with a smaller estimate counts as singular (0: never).
+    /// Active-set systems set it: their A_FF must hold every body. The
+    /// interior-point systems do not: A + diag(lambda / s) is badly scaled
+    /// near the end by design, and harmlessly.
+    double minimum_rcond = 0;
 
   private:
     struct Implementation;
