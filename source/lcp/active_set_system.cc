@@ -118,8 +118,9 @@ namespace unilateral::lcp
       if (!fixed[old_index])
         ordering.push_back(own->reduced_index[old_index]);
 
-    reduced.resize(n_free, n_free);
-    reduced.data().clear();
+    // A fresh matrix: resize() and data().clear() keep the old storage, and
+    // Eigen then repacks it on every insert (quadratic at m = 50 walls).
+    reduced = SparseMatrix(n_free, n_free);
     std::vector<Index> column_sizes(n_free, 0);
     for (Index j = 0; j < n; ++j)
       if (!fixed[j])
