@@ -25,6 +25,8 @@ namespace unilateral::lcp
     , own(std::make_shared<ActiveSetFactor>())
     , inherited(std::move(inherited))
   {
+    // A_FF must hold every body: a numerically singular factor is refused.
+    own->cholesky.minimum_rcond = 1e-14;
     const Vector diagonal = A.diagonal();
     double       mean     = diagonal.size() > 0 ? diagonal.mean() : 1.0;
     if (!(mean > 0))
@@ -75,9 +77,8 @@ namespace unilateral::lcp
     for (const char f : fixed)
       n_fixed += f;
 
-    own->fixed                   = fixed;
-    own->fixed_diagonal          = fixed_diagonal;
-    own->cholesky.minimum_rcond  = 1e-14;
+    own->fixed          = fixed;
+    own->fixed_diagonal = fixed_diagonal;
     inherited.reset(); // our own factor is closer from now on
 
     if (n_fixed <= reduced_threshold * n)

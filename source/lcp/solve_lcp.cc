@@ -179,11 +179,9 @@ namespace unilateral::lcp
         {
           const bool stage_left = eps_k * 1e-3 >= last_eps;
           projection_parameters.max_iterations =
-            stage_left ? std::min(parameters.max_iterations > 0 ?
-                                    parameters.max_iterations :
-                                    50u,
-                                  50u) :
-                         parameters.max_iterations;
+            !stage_left                    ? parameters.max_iterations :
+            parameters.max_iterations > 0 ? std::min(parameters.max_iterations, 50u) :
+                                            50u;
           projection = Report();
           solution   = start;
           run_method(SolverRegistry::get("pdas"),

@@ -142,8 +142,8 @@ namespace unilateral::lcp
     // a factor is refused (CHOLMOD's estimate: (min L_ii / max L_ii)^2).
     if (impl.factor_valid && minimum_rcond > 0)
       {
-        last_rcond        = cholmod_rcond(impl.factor, &impl.common);
-        impl.factor_valid = last_rcond > minimum_rcond;
+        impl.factor_valid =
+          cholmod_rcond(impl.factor, &impl.common) > minimum_rcond;
       }
     return impl.factor_valid;
   }

@@ -70,9 +70,6 @@ namespace unilateral::lcp
     double
     factor_nonzeros() const;
 
-    /// CHOLMOD's reciprocal condition estimate of the last factorisation.
-    double last_rcond = 0;
-
     /// A factor with a smaller estimate counts as singular (0: never).
     /// Active-set systems set it: their A_FF must hold every body. The
     /// interior-point systems do not: A + diag(lambda / s) is badly scaled

@@ -53,12 +53,15 @@ namespace unilateral::lcp
         // A factor from a previous stage (the regularised solve before the
         // projection) preconditions the first systems.
         ActiveSetSystem   system(problem.A, report.counters, solution.factor);
-        std::vector<char> active(n, 0);
+        // Ties go to the active side: before the first test every index
+        // counts as active, so an index at its bound with a zero multiplier
+        // (up to round-off) stays there. An active degenerate contact costs
+        // nothing; an inactive one can leave a body unsupported.
+        std::vector<char> active = problem.constrained_mask();
         if (parameters.pdas.start == SolverParameters::PdasStart::all_active &&
             !start_given)
           {
             // u0: the minimiser with every constraint at its bound.
-            active = problem.constrained_mask();
             for (Index k = 0; k < problem.n_constrained(); ++k)
               u[problem.constrained[k]] = problem.lower_bound[k];
             if (!system.solve(active, problem.b, u))
@@ -69,12 +72,6 @@ namespace unilateral::lcp
                 return;
               }
           }
-        // Ties go to the active side: before the first test every index
-        // counts as active, so an index at its bound with a zero multiplier
-        // (up to round-off) stays there. An active degenerate contact costs
-        // nothing; an inactive one can leave a body unsupported.
-        active = problem.constrained_mask();
-
         const unsigned int limit     = iteration_limit(500);
         const unsigned int safeguard = parameters.pdas.safeguard;
         Index              fewest_violations = problem.n_constrained() + 1;
@@ -93,9 +90,14 @@ namespace unilateral::lcp
               {
                 const Index  i = problem.constrained[k];
                 double       magnitude = std::abs(problem.b[i]);
-                const double diagonal  = problem.A.coeff(i, i);
-                for (SparseMatrix::InnerIterator entry(problem.A, i); entry; ++entry)
-                  magnitude += std::abs(entry.value() * u[entry.row()]);
+                double       diagonal  = 0;
+                for (SparseMatrix::InnerIterator entry(problem.A, i); entry;
+                     ++entry)
+                  {
+                    magnitude += std::abs(entry.value() * u[entry.row()]);
+                    if (entry.row() == i)
+                      diagonal = entry.value();
+                  }
                 const double tolerance =
                   parameters.pdas.round_off * magnitude *
                   ((diagonal > 0 ? 1.0 / diagonal : 0.0) + tau);
