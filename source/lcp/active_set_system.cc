@@ -119,22 +119,36 @@ namespace unilateral::lcp
       if (!fixed[old_index])
         ordering.push_back(own->reduced_index[old_index]);
 
-    // A fresh matrix: resize() and data().clear() keep the old storage, and
-    // Eigen then repacks it on every insert (quadratic at m = 50 walls).
+    // A_FF written straight into compressed storage, column by column: the
+    // map i -> reduced_index[i] is increasing, so every column stays sorted.
+    // (Eigen's insert() reallocates as it goes; at m = 225 walls that alone
+    // took minutes.)
+    Index n_entries = 0;
+    for (Index j = 0; j < n; ++j)
+      if (!fixed[j])
+        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+          n_entries += !fixed[it.row()];
     reduced = SparseMatrix(n_free, n_free);
-    std::vector<Index> column_sizes(n_free, 0);
+    reduced.resizeNonZeros(n_entries);
+    auto *const column_start = reduced.outerIndexPtr();
+    auto *const row_index    = reduced.innerIndexPtr();
+    double *const value      = reduced.valuePtr();
+    Index         entry      = 0;
+    column_start[0]          = 0;
     for (Index j = 0; j < n; ++j)
       if (!fixed[j])
-        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
-          column_sizes[own->reduced_index[j]] += !fixed[it.row()];
-    reduced.reserve(column_sizes);
-    for (Index j = 0; j < n; ++j)
-      if (!fixed[j])
-        for (SparseMatrix::InnerIterator it(A, j); it; ++it)
-          if (!fixed[it.row()])
-            reduced.insert(own->reduced_index[it.row()],
-                           own->reduced_index[j]) = it.value();
-    reduced.makeCompressed();
+        {
+          for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+            if (!fixed[it.row()])
+              {
+                row_index[entry] = static_cast<SparseMatrix::StorageIndex>(
+                  own->reduced_index[it.row()]);
+                value[entry] = it.value();
+                ++entry;
+              }
+          column_start[own->reduced_index[j] + 1] =
+            static_cast<SparseMatrix::StorageIndex>(entry);
+        }
     own_valid = own->cholesky.factorise(reduced, ordering, counters);
     return own_valid;
   }
