@@ -120,6 +120,21 @@ namespace unilateral
   }
 
   JsonObject &
+  JsonObject::set(const std::string &key, const std::vector<JsonObject> &array)
+  {
+    std::ostringstream text;
+    text << "[";
+    for (std::size_t i = 0; i < array.size(); ++i)
+      {
+        text << (i == 0 ? "\n    " : ",\n    ");
+        array[i].write(text, 4);
+      }
+    text << (array.empty() ? "]" : "\n  ]");
+    set_raw(key, text.str());
+    return *this;
+  }
+
+  JsonObject &
   JsonObject::object(const std::string &key)
   {
     for (auto &entry : entries)

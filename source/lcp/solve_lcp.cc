@@ -174,6 +174,7 @@ namespace unilateral::lcp
       const double     last_eps = 1e-14 * mean_diagonal;
       SolverParameters projection_parameters = parameters;
       Solution         start                 = solution;
+      start.active_set.clear(); // the test on u_eps decides, not a hint
       Report           projection;
       for (;;)
         {

@@ -48,6 +48,18 @@ namespace unilateral
     return result;
   }
 
+  lcp::SolverParameters
+  solver_parameters(const RunContext &context, const Scene &scene)
+  {
+    lcp::SolverParameters parameters = context.solver;
+    if (parameters.pdas.start == lcp::SolverParameters::PdasStart::automatic)
+      parameters.pdas.start =
+        scene.auto_pdas_start_all_active() ?
+          lcp::SolverParameters::PdasStart::all_active :
+          lcp::SolverParameters::PdasStart::zero;
+    return parameters;
+  }
+
   lcp::Report
   solve(RunContext         &context,
         const Scene        &scene,
@@ -61,14 +73,8 @@ namespace unilateral
                               " on the Schur complement" :
                               "")
                         << std::endl;
-    lcp::SolverParameters parameters = context.solver;
-    if (parameters.pdas.start == lcp::SolverParameters::PdasStart::automatic)
-      parameters.pdas.start =
-        scene.auto_pdas_start_all_active() ?
-          lcp::SolverParameters::PdasStart::all_active :
-          lcp::SolverParameters::PdasStart::zero;
     lcp::Report report = lcp::solve_lcp(problem,
-                                        parameters,
+                                        solver_parameters(context, scene),
                                         solution,
                                         context.progress,
                                         scene.auto_regularisation());

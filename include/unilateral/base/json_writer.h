@@ -9,8 +9,8 @@ namespace unilateral
 {
   /**
    * A JSON object whose keys keep the order in which they were added, for
-   * summary.json. Values are numbers, strings, booleans or nested objects;
-   * that is all a run summary needs.
+   * summary.json. Values are numbers, strings, booleans, nested objects or
+   * arrays of objects; that is all a run summary needs.
    */
   class JsonObject
   {
@@ -24,6 +24,9 @@ namespace unilateral
     JsonObject &set(const std::string &key, const std::string &value);
     JsonObject &set(const std::string &key, const char *value);
     JsonObject &set(const std::string &key, const JsonObject &value);
+    /// An array of objects (written as they are now; for a top-level key).
+    JsonObject &set(const std::string             &key,
+                    const std::vector<JsonObject> &array);
 
     /// The nested object under @p key, created if absent.
     JsonObject &object(const std::string &key);

@@ -102,6 +102,10 @@ namespace unilateral::lcp
    * The primal-dual solution: u, lambda = A u - b on S (zero elsewhere), and
    * the active set: indices of S where u sits at its bound, or (for
    * interior-point iterates) where the slack times A_ii is below lambda_i.
+   * On entry, u of the right size is the start of the methods that take one
+   * (PDAS, PSOR), and a non-empty active_set with it is PDAS's first active
+   * set, in place of the test on u (a start from a coarser mesh, whose
+   * multipliers would be noise on this one).
    */
   struct ActiveSetFactor;
 

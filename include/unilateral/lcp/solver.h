@@ -147,6 +147,8 @@ namespace unilateral::lcp
     /// The relative eps 'Regularisation = auto' uses at least, when the
     /// scene needs regularisation (0: the scene's value).
     double preferred_regularisation = 0;
+    /// Starts from a given iterate u (PDAS, PSOR); the others ignore it.
+    bool warm_start = false;
     std::function<std::unique_ptr<Solver>(const SolverParameters &)> create;
   };
 
@@ -177,7 +179,7 @@ namespace unilateral::lcp
   };
 
 #define UNILATERAL_REGISTER_SOLVER(                                              \
-  classname, name, description, definite, dense, exact, preferred_eps)           \
+  classname, name, description, definite, dense, exact, preferred_eps, warm)     \
   namespace                                                                      \
   {                                                                              \
     const bool registered_##classname = ::unilateral::lcp::SolverRegistry::add( \
@@ -187,6 +189,7 @@ namespace unilateral::lcp
        dense,                                                                    \
        exact,                                                                    \
        preferred_eps,                                                            \
+       warm,                                                                     \
        [](const ::unilateral::lcp::SolverParameters &parameters)                 \
          -> std::unique_ptr<::unilateral::lcp::Solver> {                         \
          return std::make_unique<classname>(parameters);                         \

@@ -141,6 +141,11 @@ namespace unilateral
              const lcp::Solution &solution,
              lcp::Report         &report);
 
+  /// The context's solver options with the scene's choices filled in (the
+  /// PDAS start 'auto').
+  lcp::SolverParameters
+  solver_parameters(const RunContext &context, const Scene &scene);
+
   /**
    * Solve @p problem with the context's solver options, inside a timer
    * section "solve", with the scene's automatic regularisation, then

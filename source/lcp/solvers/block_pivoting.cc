@@ -141,5 +141,6 @@ namespace unilateral::lcp
                              true,
                              false,
                              true,
-                             0)
+                             0,
+                             false)
 } // namespace unilateral::lcp

@@ -215,5 +215,6 @@ namespace unilateral::lcp
                              false,
                              true,
                              true,
-                             0)
+                             0,
+                             false)
 } // namespace unilateral::lcp

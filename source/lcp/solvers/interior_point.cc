@@ -171,5 +171,6 @@ namespace unilateral::lcp
                              false,
                              false,
                              false,
-                             0)
+                             0,
+                             false)
 } // namespace unilateral::lcp

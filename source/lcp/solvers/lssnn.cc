@@ -167,5 +167,6 @@ namespace unilateral::lcp
                              true,
                              false,
                              true,
-                             0)
+                             0,
+                             false)
 } // namespace unilateral::lcp

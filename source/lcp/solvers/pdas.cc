@@ -41,6 +41,15 @@ namespace unilateral::lcp
         // A given iterate (the projection step's u_eps, a warm start) is the
         // start; the 'Start' parameter only chooses when none is given.
         const bool start_given = u.size() == n;
+        // A given first active set (with the start) replaces the first test.
+        std::vector<char> given_active;
+        if (start_given && !solution.active_set.empty())
+          {
+            given_active.assign(n, 0);
+            for (const Index i : solution.active_set)
+              given_active[i] = 1;
+          }
+        solution.active_set.clear();
         if (!start_given)
           {
             // u0 = 0, moved onto the feasible set.
@@ -87,27 +96,34 @@ namespace unilateral::lcp
             // size of its terms.
             std::vector<Index> violated;
             for (Index k = 0; k < problem.n_constrained(); ++k)
-              {
-                const Index  i = problem.constrained[k];
-                double       magnitude = std::abs(problem.b[i]);
-                double       diagonal  = 0;
-                for (SparseMatrix::InnerIterator entry(problem.A, i); entry;
-                     ++entry)
-                  {
-                    magnitude += std::abs(entry.value() * u[entry.row()]);
-                    if (entry.row() == i)
-                      diagonal = entry.value();
-                  }
-                const double tolerance =
-                  parameters.pdas.round_off * magnitude *
-                  ((diagonal > 0 ? 1.0 / diagonal : 0.0) + tau);
-                const double test =
-                  (u[i] - problem.lower_bound[k]) - tau * lambda[i];
-                const bool now_active =
-                  active[i] ? test < tolerance : test < -tolerance;
-                if (now_active != static_cast<bool>(active[i]))
-                  violated.push_back(i);
-              }
+              if (iteration == 0 && !given_active.empty())
+                {
+                  const Index i = problem.constrained[k];
+                  if (active[i] != given_active[i])
+                    violated.push_back(i);
+                }
+              else
+                {
+                  const Index  i = problem.constrained[k];
+                  double       magnitude = std::abs(problem.b[i]);
+                  double       diagonal  = 0;
+                  for (SparseMatrix::InnerIterator entry(problem.A, i); entry;
+                       ++entry)
+                    {
+                      magnitude += std::abs(entry.value() * u[entry.row()]);
+                      if (entry.row() == i)
+                        diagonal = entry.value();
+                    }
+                  const double tolerance =
+                    parameters.pdas.round_off * magnitude *
+                    ((diagonal > 0 ? 1.0 / diagonal : 0.0) + tau);
+                  const double test =
+                    (u[i] - problem.lower_bound[k]) - tau * lambda[i];
+                  const bool now_active =
+                    active[i] ? test < tolerance : test < -tolerance;
+                  if (now_active != static_cast<bool>(active[i]))
+                    violated.push_back(i);
+                }
             if (iteration >= 1 && violated.empty())
               {
                 report.status = Status::converged;
@@ -180,5 +196,6 @@ namespace unilateral::lcp
                              true,
                              false,
                              true,
-                             0)
+                             0,
+                             true)
 } // namespace unilateral::lcp

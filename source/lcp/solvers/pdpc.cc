@@ -204,5 +204,6 @@ namespace unilateral::lcp
                              false,
                              false,
                              false,
-                             0)
+                             0,
+                             false)
 } // namespace unilateral::lcp

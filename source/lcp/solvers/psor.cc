@@ -129,5 +129,6 @@ namespace unilateral::lcp
                              true,
                              false,
                              false,
-                             1e-2)
+                             1e-2,
+                             true)
 } // namespace unilateral::lcp

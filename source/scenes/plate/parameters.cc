@@ -290,6 +290,20 @@ namespace unilateral::plate
     Obstacle::declare_parameters(prm);
     Load::declare_parameters(prm);
     Output::declare_parameters(prm);
+    prm.declare_entry(
+      "Coarse-mesh start",
+      "auto",
+      dealii::Patterns::Selection("auto|on|off"),
+      "Nested iteration: first solve the plate on a mesh with half as many "
+      "cells per side (rounded up), itself started the same way down to 8 "
+      "cells per side, and start the solver from that solution evaluated at "
+      "the nodes of this mesh (the bicubic field and its derivatives, "
+      "exactly). The active set is then nearly right from the start: at 90 x "
+      "90 PDAS needs a few iterations instead of 37. Used with an obstacle "
+      "and meshes of at least 16 cells per side. 'auto': on for the methods "
+      "that start from a given iterate (pdas, psor), off for the others "
+      "(their iterations are then the paper's). 'off': the method's own "
+      "start everywhere.");
     prm.leave_subsection();
   }
 
@@ -302,6 +316,10 @@ namespace unilateral::plate
     obstacle.parse_parameters(prm);
     load.parse_parameters(prm);
     output.parse_parameters(prm);
+    const std::string start = prm.get("Coarse-mesh start");
+    coarse_mesh_start = start == "on"  ? CoarseMeshStart::on :
+                        start == "off" ? CoarseMeshStart::off :
+                                         CoarseMeshStart::automatic;
     prm.leave_subsection();
   }
 } // namespace unilateral::plate

@@ -24,10 +24,25 @@ namespace unilateral::plate
     Parameters::declare_parameters(prm);
   }
 
-  PlateScene::PlateScene(dealii::ParameterHandler &prm)
-    : fe(dealii::FE_Q<2>(1), fe::BognerFoxSchmit::dofs_per_vertex)
+  namespace
   {
-    parameters.parse_parameters(prm);
+    Parameters
+    parsed(dealii::ParameterHandler &prm)
+    {
+      Parameters parameters;
+      parameters.parse_parameters(prm);
+      return parameters;
+    }
+  } // namespace
+
+  PlateScene::PlateScene(dealii::ParameterHandler &prm)
+    : PlateScene(parsed(prm))
+  {}
+
+  PlateScene::PlateScene(const Parameters &parameters)
+    : parameters(parameters)
+    , fe(dealii::FE_Q<2>(1), fe::BognerFoxSchmit::dofs_per_vertex)
+  {
     rigidity = flexural_rigidity(parameters.material.youngs_modulus,
                                  parameters.material.poisson_ratio,
                                  parameters.geometry.thickness);
@@ -141,6 +156,11 @@ namespace unilateral::plate
   lcp::Report
   PlateScene::solve(RunContext &context)
   {
+    if (uses_coarse_mesh_start(context))
+      {
+        dealii::TimerOutput::Scope scope(*context.timer, "coarse-mesh start");
+        solution = coarse_mesh_start(context);
+      }
     return unilateral::solve(context, *this, problem, solution);
   }
 
@@ -207,6 +227,19 @@ namespace unilateral::plate
         << "  |J| = " << plate_results.n_free << " free DOFs, |J1| = "
         << plate_results.n_bounds << " bounded nodes\n";
     print_solver_summary(out, problem, report);
+    if (!coarse_levels.empty())
+      {
+        out << "  started from the solution on";
+        for (const CoarseLevel &level : coarse_levels)
+          out << (&level == &coarse_levels.front() ? " " : ", ") << level.n_x
+              << " x " << level.n_y << " (" << level.iterations
+              << " iterations"
+              << (level.status == lcp::Status::converged ?
+                    "" :
+                    ", " + lcp::to_string(level.status))
+              << ")";
+        out << "\n";
+      }
     out << "  contact nodes cn = " << plate_results.n_contact << "\n"
         << std::scientific << std::setprecision(6)
         << "  min nodal deflection " << plate_results.min_deflection
@@ -242,6 +275,15 @@ namespace unilateral::plate
       .set("obstacle_expression", parameters.obstacle.expression)
       .set("force", parameters.load.name)
       .set("force_expression", parameters.load.expression);
+    // The coarse-mesh start, finest first: [] when the run had none.
+    std::vector<JsonObject> levels;
+    for (const CoarseLevel &level : coarse_levels)
+      levels.emplace_back()
+        .set("n1", level.n_x)
+        .set("n2", level.n_y)
+        .set("iterations", level.iterations)
+        .set("status", lcp::to_string(level.status));
+    summary.set("coarse_mesh_start", levels);
     unilateral::write_summary(context, summary);
   }
 

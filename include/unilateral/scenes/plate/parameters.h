@@ -98,13 +98,22 @@ namespace unilateral::plate
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /// Plate/Coarse-mesh start: solve on coarser meshes first.
+  enum class CoarseMeshStart
+  {
+    automatic, ///< on for methods that start from a given iterate
+    on,
+    off
+  };
+
   struct Parameters
   {
-    Geometry geometry;
-    Material material;
-    Obstacle obstacle;
-    Load     load;
-    Output   output;
+    Geometry        geometry;
+    Material        material;
+    Obstacle        obstacle;
+    Load            load;
+    Output          output;
+    CoarseMeshStart coarse_mesh_start = CoarseMeshStart::automatic;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -57,6 +57,8 @@ namespace unilateral::plate
 
     explicit PlateScene(dealii::ParameterHandler &prm);
 
+    explicit PlateScene(const Parameters &parameters);
+
     lcp::Report
     run(RunContext &context) override;
 
@@ -65,6 +67,14 @@ namespace unilateral::plate
     {
       return 0;
     }
+
+    /// One mesh of the coarse-mesh start (nested iteration), coarsest last.
+    struct CoarseLevel
+    {
+      unsigned int n_x = 0, n_y = 0;
+      unsigned int iterations = 0;
+      lcp::Status  status     = lcp::Status::converged;
+    };
 
     /// What a run found, in the paper's terms (valid after run()).
     struct Results
@@ -83,6 +93,13 @@ namespace unilateral::plate
     results() const
     {
       return plate_results;
+    }
+
+    /// The coarse meshes this run started from, finest first (none: empty).
+    const std::vector<CoarseLevel> &
+    coarse_mesh_levels() const
+    {
+      return coarse_levels;
     }
 
     /// All BFS DOFs of the solution (deal.II numbering, fixed ones zero).
@@ -110,6 +127,21 @@ namespace unilateral::plate
 
     lcp::Report
     solve(RunContext &context);
+
+    /// In coarse_mesh_start.cc: whether this run starts from a coarser mesh.
+    bool
+    uses_coarse_mesh_start(const RunContext &context) const;
+
+    /// The start from the mesh with half as many cells per side (itself
+    /// started the same way): u and the first active set on this mesh;
+    /// empty if that solve failed. Records the levels in coarse_levels.
+    lcp::Solution
+    coarse_mesh_start(const RunContext &context);
+
+    /// This mesh's solution at the free DOFs of @p fine, with the nodes
+    /// where it touches or dips below the obstacle as active set.
+    lcp::Solution
+    interpolate_to(const PlateScene &fine) const;
 
     void
     compute_results(const lcp::Report &report);
@@ -140,7 +172,8 @@ namespace unilateral::plate
     lcp::Problem  problem;
     lcp::Solution solution;
 
-    dealii::Vector<double> dof_values;
-    Results                plate_results;
+    dealii::Vector<double>   dof_values;
+    Results                  plate_results;
+    std::vector<CoarseLevel> coarse_levels;
   };
 } // namespace unilateral::plate
