@@ -363,6 +363,7 @@ namespace unilateral::masonry
     export_lcp_if_requested(context, state->problem);
 
     const lcp::Report report = solve(context);
+    write_solution_if_requested(context, state->solution);
     {
       const auto timer = section(context, "recover solution");
       recover_physical_solution();
