@@ -3,47 +3,62 @@
 
     /usr/bin/python3 benchmarks/evidence/run_evidence.py [--quick] [options]
 
-Scenes: the three masonry walls (stack bond, running bond, laminae; Ainsworth
-& Mihai) and the clamped steel plate under f1 over psi1, psi2, psi3
-(Fernandes, Figueiredo & Judice). For each scene it runs
+Scenes: the three masonry walls (stack bond, running bond, laminae, g = H/2;
+Ainsworth & Mihai) and the clamped steel plate under f1 over psi1, psi2,
+psi3 (Fernandes, Figueiredo & Judice). For each scene it runs (FULL and
+QUICK below hold the lists)
 
   size        the mesh sweep with every solver at its defaults (exact methods,
               and the approximate ones followed by the projection step):
-              masonry m = 5, 10, 20, 50, ... at r = 0; plate n1 = 8, ..., 64;
-  refinement  masonry only: m = 5, r = 0..3, every solver (the plate's size
-              sweep is its refinement sweep);
+              masonry m = 5, 10, 20, 50, 100 at r = 0; plate n1 = 8..64;
+  refinement  masonry only: m = 5, r = 0..3 (the plate's size sweep is its
+              refinement sweep);
   tolerance   psor, pdpc, interior_point and block_pivoting with
-              'Projection = false' and their tolerances swept, on one mesh;
+              'Projection = false' and their tolerances swept (1e-2..1e-12),
+              on one mesh (masonry m = 20; plate n1 = 32);
   reference   per case one much finer mesh (masonry m = 5, r = 5; plate
               n1 = 256), solved once, for the discretisation error.
 
+A solver is not run on sizes where it is known to be hopeless (skip_reason:
+dense methods on many constraints, PSOR and LSSNN on large meshes, the
+interior point with the paper's eps1 on the plate, ...) nor on a larger mesh
+of a case on which it already hit the time limit; runs.csv gives the reason
+and the script prints it. --no-skip runs everything (the time limit still
+applies).
+
 Each configuration runs 3 times (the solve time is the median of
 summary.json's wall-clock 'solve' section); a run slower than --repeat-below
-seconds runs once (column 'repeats'). The first run also writes the LCP
+(5 s) runs once (column 'repeats'). The first run also writes the LCP
 solution in double precision (Output/Write solution), and the first run on
 each mesh the LCP itself (Output/Export LCP), so that
 
-  algebraic error       = against the most accurate converged exact run on
-                          the same mesh: ||u - u_ref||_A / ||u_ref||_A,
-                          max |u - u_ref| / max |u_ref|, |E - E_ref| / |E_ref|;
-  discretisation error  = against the fine reference: e_E = sqrt(|E_h - E_ref|
-                          / |E_ref|) (the relative energy-norm error for
-                          nested conforming spaces, since E = -||u||_A^2 / 2 at
-                          a solution), and the relative error of the peak
-                          (masonry: max displacement, i.e. the settlement;
-                          plate: max deflection = -min nodal deflection).
+  algebraic error       = against the most accurate (smallest KKT residual)
+                          converged exact run on the same mesh:
+                          max |u - u_ref| / max |u_ref| (plotted),
+                          ||u - u_ref||_A / ||u_ref||_A (a seminorm on the
+                          masonry: blind to rigid-body motions) and
+                          |E - E_ref| / |E_ref|;
+  discretisation error  = against the fine reference: sqrt(|E_h - E_ref| /
+                          |E_ref|) (the relative energy-norm error for nested
+                          conforming spaces without contact, since
+                          E = -||u||_A^2 / 2 at a solution), the relative
+                          error of the peak (masonry: max displacement, the
+                          settlement; plate: max deflection = -min nodal
+                          deflection) and, for the plate, of the obstacle
+                          force sum(lambda).
 
 Writes benchmarks/results/evidence/: runs.csv (one row per configuration,
-skipped ones with the reason), convergence.csv (errors per mesh and the
-fitted orders), references.csv, error_time_<scene>.png (error against time,
-one curve per solver), convergence_<family>.png, and runs/ (parameter files,
-summaries, solutions; not committed).
+skipped ones with the reason), references.csv, convergence.csv and
+convergence_orders.csv, error_time_<case>.png (error against time, one curve
+per solver), convergence_<family>.png, and runs/ (parameter files, summaries,
+solutions, state.json; not committed).
 
-Options: --quick (small sizes, 1 repeat, < 3 min), --cases (comma separated
-subset of stack_bond, running_bond, laminae, psi1, psi2, psi3), --studies
-(size, refinement, tolerance), --timeout S (per run), --repeats N,
---repeat-below S, --executable PATH, --plots-only (redo CSV and plots from
-the runs already on disk), --keep-lcp (keep the exported lcp_A.mtx files).
+Options: --quick (small sizes, 1 repeat, about 2 min), --cases (comma
+separated subset of stack_bond, running_bond, laminae, psi1, psi2, psi3),
+--studies (size, refinement, tolerance), --timeout S (per run; 60, quick 20),
+--repeats N, --repeat-below S, --no-skip, --executable PATH, --plots-only
+(CSV and plots again from runs/state.json), --keep-lcp (keep the exported
+lcp_A.mtx files).
 """
 import argparse
 import csv
@@ -51,6 +66,7 @@ import json
 import math
 import os
 import shutil
+import signal
 import statistics
 import subprocess
 import sys
@@ -124,7 +140,7 @@ FULL = {
     "masonry_refinement_m": 5,
     "masonry_r": [0, 1, 2, 3],
     "masonry_reference_r": 5,
-    "masonry_tolerance_m": 10,
+    "masonry_tolerance_m": 20,
     "plate_n": [8, 16, 32, 64],
     "plate_reference_n": 256,
     "plate_tolerance_n": 32,
@@ -147,11 +163,13 @@ QUICK = {
 }
 
 
-def skip_reason(label, family, n, n_c):
+def skip_reason(label, case, n, n_c, tolerance=None):
     """Sizes on which a solver is known to be hopeless, with the reason
     (measured on this machine where it says so). n, n_c: unknowns and
-    constraints of the mesh. --no-skip turns these off."""
-    method, schur, settings = SOLVERS[label]
+    constraints of the mesh; tolerance: set in a tolerance sweep. --no-skip
+    turns these off."""
+    family = CASES[case][0]
+    schur = label.endswith("_sc")
     if label == "graves_sc" and n_c > 1000:
         return (f"Graves pivots on a dense tableau: n_c = {n_c} > 1000 "
                 "(running bond m = 20, n_c = 1735: cycles for 2 min, "
@@ -160,13 +178,24 @@ def skip_reason(label, family, n, n_c):
         return (f"dense Schur complement with n_c = {n_c} > 2500 "
                 "(8 n_c^2 bytes, O(n_c^3) per factorisation; already slower "
                 "than the sparse methods at m = 20)")
-    if label == "psor" and n > 20000:
+    if label == "psor" and family == "masonry" and n > 20000:
         return (f"PSOR on n = {n} > 20000 (measured: 97 s at stack bond "
                 "m = 50)")
-    if label in ("lssnn", "block_pivoting") and family == "masonry" and \
-            n_c > 5000:
-        return (f"{label} on n_c = {n_c} > 5000 (measured: more than 120 s "
-                "at running bond m = 50)")
+    if label == "psor" and family == "plate" and n > 10000:
+        return (f"PSOR on n = {n} > 10000 (measured: more than 60 s at "
+                "n1 = 64)")
+    if label in ("lssnn", "block_pivoting") and case == "running_bond" and \
+            n_c > 4000:
+        return (f"{label} on running bond with n_c = {n_c} > 4000 "
+                "(measured: more than 120 s at m = 50)")
+    if label == "lssnn" and case == "laminae" and n_c > 4000:
+        return (f"LSSNN on laminae with n_c = {n_c} > 4000 (measured: more "
+                "than 60 s at m = 50)")
+    if label == "lssnn" and family == "plate" and n_c > 2000:
+        return (f"LSSNN on n_c = {n_c} > 2000 (measured: more than 60 s at "
+                "n1 = 64)")
+    if tolerance is not None:
+        return None
     if label == "interior_point" and family == "plate" and n > 2000:
         return ("interior point with the paper's eps1 = 1e-10 (absolute): "
                 "below the rounding floor of its residual from 20 x 20 "
@@ -225,6 +254,12 @@ def mesh_name(case, mesh):
     if family == "masonry":
         return f"{case}_m{mesh[0]}_r{mesh[1]}"
     return f"{case}_n{mesh[0]}"
+
+
+def mesh_label(case, mesh):
+    if CASES[case][0] == "masonry":
+        return f"m = {mesh[0]}, r = {mesh[1]}"
+    return f"n1 = {mesh[0]}"
 
 
 def config_name(case, mesh, label, tolerance=None):
@@ -345,7 +380,8 @@ class Runner:
         self.results[name] = result
         if info is not None:
             reason = (None if self.no_skip else
-                      skip_reason(label, family, info["n"], info["n_c"]))
+                      skip_reason(label, case, info["n"], info["n_c"],
+                                  tolerance))
             smaller = [r for r in self.results.values()
                        if r["case"] == case and r["label"] == label and
                        r["tolerance"] == tolerance and
@@ -601,6 +637,8 @@ def discretisation_errors(runner, fine):
                 "energy_error_signed": best.get("disc_err_energy_signed"),
                 "energy_norm_error": best.get("disc_err_enorm"),
                 "peak_error": best.get("disc_err_peak"),
+                "peak_error_signed": (peak_of(best["summary"]) - peak_ref) /
+                abs(peak_ref),
                 "contact_force": force, "contact_force_error": force_error,
                 "reference_contact_force": force_ref,
                 "reference_mesh": mesh_name(case, reference["mesh"]),
@@ -718,7 +756,7 @@ def write_all(runner, references, convergence, orders):
                for ref in references])
     fields = ["case", "mesh", "h", "n", "solver", "status", "energy", "peak",
               "energy_error_signed", "energy_norm_error", "peak_error",
-              "contact_force", "contact_force_error",
+              "peak_error_signed", "contact_force", "contact_force_error",
               "reference_contact_force",
               "reference_mesh", "reference_h", "reference_solver",
               "reference_status", "reference_energy", "reference_peak"]
@@ -726,8 +764,59 @@ def write_all(runner, references, convergence, orders):
               [{k: fmt(v, ".6e") if isinstance(v, float) else v
                 for k, v in row.items()} for row in convergence])
     write_csv(os.path.join(RESULTS, "convergence_orders.csv"),
-              ["case", "quantity", "order", "fitted_on"],
-              [{**o, "order": fmt(o["order"], ".3f")} for o in orders])
+              ["case", "quantity", "order", "slope", "fitted_on",
+               "reference"],
+              [{**o, "order": fmt(o["order"], ".3f"),
+                "slope": fmt(o["slope"], ".3f")} for o in orders])
+
+
+SHORT_STATUS = {"iteration limit": "iteration limit", "singular": "singular",
+                "timeout": "timeout", "inaccurate": "inaccurate",
+                "infeasible": "infeasible", "error": "error"}
+
+
+def write_summary_md(runner, path):
+    """One table per scene family: for every mesh the solvers with their
+    default settings, fastest first; converged ones with their median solve
+    time, the others with their status."""
+    lines = ["# Time against error: solvers by mesh, fastest first", "",
+             "Generated by `benchmarks/evidence/run_evidence.py` from "
+             "`runs.csv`. Median solve time in seconds (wall clock, "
+             "`summary.json` 'solve'), default settings (the approximate "
+             "methods followed by the projection step). **Bold**: fastest "
+             "converged. Not converged: status in brackets (with its time). "
+             "Skipped: see `runs.csv`.", ""]
+    for family in ("masonry", "plate"):
+        lines += [f"## {family}", "",
+                  "| case | mesh | n | n_c | converged, fastest first | "
+                  "not converged |", "|---|---|---|---|---|---|"]
+        meshes = {}
+        for r in runner.results.values():
+            if r["family"] == family and r["projection"]:
+                meshes.setdefault((list(CASES).index(r["case"]),
+                                   r["mesh"], r["case"]), []).append(r)
+        for (_, mesh, case), results in sorted(meshes.items()):
+            if not any(r["times"] for r in results):
+                continue
+            summary = next(r["summary"] for r in results if "summary" in r)
+            good = sorted([r for r in results if r.get("status") ==
+                           "converged" and r["times"]], key=solve_time)
+            bad = [r for r in results if r.get("status") not in
+                   ("converged", "skipped")]
+            cells = [f"{r['label']} {solve_time(r):.3g}" for r in good]
+            if cells:
+                cells[0] = f"**{cells[0]}**"
+            failed = [f"{r['label']} ({r.get('status')}"
+                      + (f", {solve_time(r):.3g}" if r["times"] else "")
+                      + ")" for r in bad]
+            lines.append(f"| {CASES[case][1]} | "
+                         f"{mesh_label(case, mesh)} | "
+                         f"{summary['n_unknowns']} | "
+                         f"{summary['n_constraints']} | "
+                         f"{', '.join(cells)} | {', '.join(failed)} |")
+        lines.append("")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
 
 
 # ---------------------------------------------------------------------------
@@ -742,7 +831,7 @@ STYLE = {
     "interior_point_eps6": ("black", "*"),
     "block_pivoting": ("tab:brown", "P"),
     "pdas_sc": ("tab:cyan", "o"), "pdpc_sc": ("gold", "s"),
-    "lssnn_sc": ("salmon", "v"), "graves_sc": ("tab:gray", "X"),
+    "lssnn_sc": ("salmon", "v"), "graves_sc": ("tab:gray", "h"),
 }
 FLOOR = 1e-16
 
@@ -968,24 +1057,20 @@ def plot_convergence(family, convergence, orders, path):
                           o["quantity"] == quantity), None)
             label = CASES[case][1]
             if order and math.isfinite(order["order"]):
-                label += f": fitted order {order['order']:.2f}"
+                label += (f": order {order['order']:.2f} "
+                          f"(slope {order['slope']:.2f})")
             positive = [(h, e) for h, e in points if e > 0]
             zero = [(h, e) for h, e in points if not e > 0]
             if zero:
-                label += f" (exact on {len(zero)} meshes: drawn at 1e-16)"
+                label += f": error 0 on {len(zero)} of {len(points)} meshes"
             ax.plot([p[0] for p in positive], [p[1] for p in positive],
                     "o-", color=color, label=label)
-            for h, _ in zero:
-                ax.plot(h, FLOOR, "v", color=color, ms=8)
-            if order and math.isfinite(order["order"]):
-                fitted = [p for p in positive if p[0] in order["hs"]]
-                if len(fitted) > 1:
-                    x = np.array([p[0] for p in fitted])
-                    y = np.array([p[1] for p in fitted])
-                    c = np.exp(np.mean(np.log(y) - order["order"] *
-                                       np.log(x)))
-                    ax.plot(x, c * x ** order["order"], "--", color=color,
-                            lw=0.9)
+            if order and math.isfinite(order["order"]) and \
+                    len(order["hs"]) > 1:
+                x = np.geomspace(min(order["hs"]), max(order["hs"]), 50)
+                ax.plot(x, order["constant"] * model(
+                    x, order["h_ref"], order["order"], order["power"]),
+                    "--", color=color, lw=0.9)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("h" + (" (cell size; unit square wall)" if family ==
@@ -997,34 +1082,75 @@ def plot_convergence(family, convergence, orders, path):
     ref_mesh = reference.get("reference_mesh", "?").split("_")[-1]
     fig.suptitle(
         f"Convergence in h, {family}: errors against the solution on the "
-        f"reference mesh {ref_mesh} (dashed: least-squares fit)",
-        fontsize=11)
-    fig.tight_layout(rect=(0, 0, 1, 0.94))
+        f"reference mesh {ref_mesh}\ndashed: C |h^q - h_ref^q| (energy: "
+        "C |h^2q - h_ref^2q|^1/2) fitted on the three finest meshes; order = "
+        "q, slope = plain log-log slope there", fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.91))
     fig.savefig(path, dpi=80)
     plt.close(fig)
 
 
+# Power of the error model per quantity: the energy error is the square
+# root of E_h - E_ref, which behaves like h^(2q) - h_ref^(2q).
+MODEL_POWER = {"energy_norm_error": 2, "peak_error": 1,
+               "contact_force_error": 1}
+
+
+def model(h, h_ref, q, power):
+    """Error against a reference on h_ref of a quantity converging like h^q:
+    (|h^(power q) - h_ref^(power q)|)^(1 / power)."""
+    return np.abs(np.asarray(h) ** (power * q) - h_ref ** (power * q)) ** \
+        (1.0 / power)
+
+
+def fit_order_with_reference(hs, errors, h_ref, power):
+    """Order q and constant C of e(h) = C model(h, h_ref, q) by least squares
+    in log(e): the reference's own error is part of the model, so the order
+    is not inflated as h approaches h_ref."""
+    points = [(h, e) for h, e in zip(hs, errors)
+              if e is not None and e > 0 and math.isfinite(e)]
+    if len(points) < 2:
+        return float("nan"), float("nan")
+    h = np.array([p[0] for p in points])
+    y = np.log([p[1] for p in points])
+    best = None
+    for q in np.linspace(0.05, 8, 3181):
+        g = np.log(model(h, h_ref, q, power))
+        log_c = np.mean(y - g)
+        residual = np.sum((y - log_c - g) ** 2)
+        if best is None or residual < best[0]:
+            best = (residual, q, math.exp(log_c))
+    return float(best[1]), float(best[2])
+
+
 def fit_orders(convergence):
-    """Fitted on meshes at least 4 times coarser than the reference."""
+    """Per case and quantity, on the three finest meshes below the reference:
+    the order with the reference's error modelled, and the plain log-log
+    slope."""
     orders = []
     for case in CASES:
         rows = [row for row in convergence if row["case"] == case]
         if not rows:
             continue
-        for quantity in ("energy_norm_error", "peak_error",
-                         "contact_force_error"):
+        for quantity, power in MODEL_POWER.items():
             if quantity == "contact_force_error" and \
                     CASES[case][0] != "plate":
                 continue
-            usable_rows = [row for row in rows
-                           if row["h"] >= 4 * row["reference_h"] * 0.999
-                           and row[quantity] is not None]
+            usable_rows = sorted([row for row in rows
+                                  if row.get(quantity) is not None],
+                                 key=lambda row: row["h"])[:3]
             hs = [row["h"] for row in usable_rows]
-            order = fit_order(hs, [row[quantity] for row in usable_rows])
+            errors = [row[quantity] for row in usable_rows]
+            h_ref = rows[0]["reference_h"]
+            order, constant = fit_order_with_reference(hs, errors, h_ref,
+                                                       power)
             orders.append({"case": case, "quantity": quantity,
-                           "order": order, "hs": hs,
+                           "order": order, "constant": constant,
+                           "h_ref": h_ref, "power": power,
+                           "slope": fit_order(hs, errors), "hs": hs,
                            "fitted_on": " ".join(row["mesh"].split("_")[-1]
-                                                 for row in usable_rows)})
+                                                 for row in usable_rows),
+                           "reference": rows[0]["reference_mesh"]})
     return orders
 
 
@@ -1056,6 +1182,9 @@ def main():
         sys.exit(f"no executable {arguments.executable}: build first")
     if os.nice(0) < 10:
         os.nice(10 - os.nice(0))   # shared machine: everything at nice 10
+    # On SIGTERM, end the running child too (subprocess.run kills it on any
+    # exception).
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit("terminated"))
     runner = Runner(arguments, plan)
     if arguments.plots_only:
         runner.load()
@@ -1126,6 +1255,7 @@ def report(runner, plan, cases):
     convergence = discretisation_errors(runner, fine)
     orders = fit_orders(convergence)
     write_all(runner, runner.references, convergence, orders)
+    write_summary_md(runner, os.path.join(RESULTS, "summary.md"))
     print("== plots", flush=True)
     for case in cases:
         plot_case(runner, case, plan,
