@@ -56,7 +56,8 @@ solutions, state.json; not committed).
 Options: --quick (small sizes, 1 repeat, about 2 min), --cases (comma
 separated subset of stack_bond, running_bond, laminae, psi1, psi2, psi3),
 --studies (size, refinement, tolerance), --timeout S (per run; 60, quick 20),
---repeats N, --repeat-below S, --no-skip, --executable PATH, --plots-only
+--repeats N, --repeat-below S, --no-skip, --output DIR (default
+benchmarks/results/evidence), --executable PATH, --plots-only
 (CSV and plots again from runs/state.json), --keep-lcp (keep the exported
 lcp_A.mtx files).
 """
@@ -180,7 +181,8 @@ def skip_reason(label, case, n, n_c, tolerance=None):
                 "than the sparse methods at m = 20)")
     if label == "psor" and family == "masonry" and n > 20000:
         return (f"PSOR on n = {n} > 20000 (measured: 97 s at stack bond "
-                "m = 50)")
+                "m = 50, 95 s of it in the projection's slow PDAS "
+                "factorisations, benchmarks/README.md)")
     if label == "psor" and family == "plate" and n > 10000:
         return (f"PSOR on n = {n} > 10000 (measured: more than 60 s at "
                 "n1 = 64)")
@@ -326,7 +328,9 @@ class Runner:
         self.references = []
         self.started = time.time()
 
-    STATE = os.path.join(RUNS, "state.json")
+    @property
+    def STATE(self):
+        return os.path.join(RUNS, "state.json")
 
     def save(self):
         """Everything measured so far (for --plots-only)."""
@@ -852,7 +856,11 @@ def plot_points(ax, points, label, top, connect=True, exact=False):
     Values above top are drawn at top (off scale). exact: a single point
     of a method with the projection step, drawn large with a black edge."""
     color, marker = STYLE.get(label, ("black", "o"))
+    # A breakdown leaves a non-finite answer: drawn at the top, off scale.
+    points = [(x, y if y is not None and math.isfinite(y) else math.inf, r)
+              for x, y, r in points]
     clip = [(x, min(max(y, FLOOR), top), r, y > top) for x, y, r in points]
+    y_of = {id(r): y for x, y, r in points}
     good = [(x, y) for x, y, r, _ in clip if category(r) != "failed"]
     if connect and len(good) > 1:
         ax.plot([p[0] for p in good], [p[1] for p in good], "-",
@@ -867,7 +875,8 @@ def plot_points(ax, points, label, top, connect=True, exact=False):
             ax.plot(x, y, marker, mfc=color if c == "converged" else "white",
                     mec=edge, mew=1.2 if exact else 1.0, ms=size, ls="none")
         if off:
-            ax.annotate("off scale", (x, y), textcoords="offset points",
+            ax.annotate("off scale" if math.isfinite(y_of[id(r)]) else "NaN",
+                        (x, y), textcoords="offset points",
                         xytext=(0, -11), ha="center", fontsize=6,
                         color=color)
 
@@ -1159,6 +1168,7 @@ def fit_orders(convergence):
 # ---------------------------------------------------------------------------
 
 def main():
+    global RESULTS, RUNS
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--cases", default=",".join(CASES))
@@ -1169,9 +1179,12 @@ def main():
     parser.add_argument("--keep-lcp", action="store_true")
     parser.add_argument("--plots-only", action="store_true")
     parser.add_argument("--no-skip", action="store_true")
+    parser.add_argument("--output", default=RESULTS)
     parser.add_argument("--executable",
                         default=os.path.join(ROOT, "build", "unilateral"))
     arguments = parser.parse_args()
+    RESULTS = os.path.abspath(arguments.output)
+    RUNS = os.path.join(RESULTS, "runs")
     plan = QUICK if arguments.quick else FULL
     cases = [c.strip() for c in arguments.cases.split(",") if c.strip()]
     for case in cases:
