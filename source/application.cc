@@ -70,6 +70,14 @@ namespace unilateral
                           "lcp_constraints.txt) in the format the lcp scene "
                           "reads, so other tools can solve exactly our "
                           "problem.");
+        prm.declare_entry("Write solution",
+                          "false",
+                          dealii::Patterns::Bool(),
+                          "Write the solution of the LCP (u.txt and "
+                          "lambda.txt, one number per line, 17 digits) in the "
+                          "unknowns of the exported LCP, as the lcp scene "
+                          "does; for comparing solutions to round-off (VTU "
+                          "data are single precision).");
         prm.declare_entry("Print timings",
                           "true",
                           dealii::Patterns::Bool(),
@@ -126,6 +134,7 @@ namespace unilateral
           std::filesystem::path(parameter_file).stem().string();
       context.write_vtu     = prm.get_bool("Write VTU");
       context.export_lcp    = prm.get_bool("Export LCP");
+      context.write_solution = prm.get_bool("Write solution");
       context.print_timings = prm.get_bool("Print timings");
       const bool progress   = prm.get_bool("Progress");
       prm.leave_subsection();

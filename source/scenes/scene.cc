@@ -218,4 +218,16 @@ namespace unilateral
     dealii::TimerOutput::Scope scope(*context.timer, "export LCP");
     lcp::write_problem(problem, context.output_directory.string());
   }
+
+  void
+  write_solution_if_requested(const RunContext    &context,
+                              const lcp::Solution &solution)
+  {
+    if (!context.write_solution)
+      return;
+    dealii::TimerOutput::Scope scope(*context.timer, "write solution");
+    const std::string directory = context.output_directory.string();
+    lcp::write_vector(solution.u, directory + "/u.txt");
+    lcp::write_vector(solution.lambda, directory + "/lambda.txt");
+  }
 } // namespace unilateral

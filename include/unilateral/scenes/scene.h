@@ -31,6 +31,7 @@ namespace unilateral
     std::filesystem::path output_directory; ///< created before run()
     bool                  write_vtu    = true;
     bool                  export_lcp   = false;
+    bool                  write_solution = false;
     bool                  print_timings = true;
     lcp::SolverParameters solver;
     std::ostream         *out      = nullptr; ///< the screen
@@ -183,4 +184,10 @@ namespace unilateral
   /// With Output/Export LCP: write the LCP in the lcp scene's file format.
   void
   export_lcp_if_requested(const RunContext &context, const lcp::Problem &problem);
+
+  /// With Output/Write solution: write u and lambda of the LCP (u.txt,
+  /// lambda.txt, as the lcp scene does), in the unknowns of the exported LCP.
+  void
+  write_solution_if_requested(const RunContext    &context,
+                              const lcp::Solution &solution);
 } // namespace unilateral

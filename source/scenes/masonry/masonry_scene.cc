@@ -385,6 +385,7 @@ namespace unilateral::masonry
     export_lcp_if_requested(context, state->problem);
 
     lcp::Report report = solve(context);
+    write_solution_if_requested(context, state->solution);
     report.energy *= unit;
     report.regularisation *= unit;
     {

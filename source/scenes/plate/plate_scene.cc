@@ -305,6 +305,7 @@ namespace unilateral::plate
     export_lcp_if_requested(context, problem);
 
     const lcp::Report report = solve(context);
+    write_solution_if_requested(context, solution);
     compute_results(report);
     if (context.write_vtu)
       {
