@@ -91,10 +91,10 @@ main()
         plate_runs::paper_configuration("steel", "psi3", "f1", n);
       const auto from_zero = plate_runs::run_plate(
         "coarse_start_off_" + std::to_string(n),
-        plate + "set Coarse-mesh start = off\n", "pdas");
+        plate + "set Coarse-mesh start = false\n", "pdas");
       const auto nested = plate_runs::run_plate(
         "coarse_start_on_" + std::to_string(n),
-        plate + "set Coarse-mesh start = on\n", "pdas");
+        plate + "set Coarse-mesh start = true\n", "pdas");
       std::cout << "steel psi3 f1 " << n << "x" << n
                 << ": pdas started from";
       bool levels_converged = true;

@@ -2,10 +2,10 @@
  * The plate's coarse-mesh start (nested iteration): solve on a mesh with half
  * as many cells per side, evaluate that solution at the nodes of this mesh
  * and start the solver there. The contact set of the coarse plate is the fine
- * one up to a band one coarse cell wide, so PDAS on the fine mesh changes a
- * few hundred indices once or twice instead of wandering through thousands
- * (90 x 90 on psi3: 37 iterations from zero), and most of the work is done
- * on meshes a quarter, a sixteenth... the size.
+ * one up to a band about one coarse cell wide, so PDAS on the fine mesh
+ * starts near the answer instead of swinging through thousands of nodes (90
+ * x 90 on psi3: 7 iterations instead of 37), and the rest of the work is
+ * done on meshes a quarter, a sixteenth... the size.
  */
 #include <unilateral/lcp/solver.h>
 #include <unilateral/scenes/plate/plate_scene.h>
@@ -27,12 +27,9 @@ namespace unilateral::plate
   bool
   PlateScene::uses_coarse_mesh_start(const RunContext &context) const
   {
-    if (parameters.coarse_mesh_start == CoarseMeshStart::off ||
-        obstacle == nullptr ||
-        std::min(parameters.geometry.n_x, parameters.geometry.n_y) <
-          2 * coarsest_cells)
-      return false;
-    return parameters.coarse_mesh_start == CoarseMeshStart::on ||
+    return parameters.coarse_mesh_start && obstacle != nullptr &&
+           std::min(parameters.geometry.n_x, parameters.geometry.n_y) >=
+             2 * coarsest_cells &&
            lcp::SolverRegistry::get(context.solver.method).warm_start;
   }
 

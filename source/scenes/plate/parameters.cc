@@ -292,18 +292,17 @@ namespace unilateral::plate
     Output::declare_parameters(prm);
     prm.declare_entry(
       "Coarse-mesh start",
-      "auto",
-      dealii::Patterns::Selection("auto|on|off"),
+      "true",
+      dealii::Patterns::Bool(),
       "Nested iteration: first solve the plate on a mesh with half as many "
       "cells per side (rounded up), itself started the same way down to 8 "
       "cells per side, and start the solver from that solution evaluated at "
       "the nodes of this mesh (the bicubic field and its derivatives, "
       "exactly). The active set is then nearly right from the start: at 90 x "
-      "90 PDAS needs a few iterations instead of 37. Used with an obstacle "
-      "and meshes of at least 16 cells per side. 'auto': on for the methods "
-      "that start from a given iterate (pdas, psor), off for the others "
-      "(their iterations are then the paper's). 'off': the method's own "
-      "start everywhere.");
+      "90 PDAS needs 7 iterations instead of 37. Used with an obstacle, "
+      "meshes of at least 16 cells per side and the methods that take a "
+      "start (pdas, psor); the others keep the paper's start. false: the "
+      "method's own start always.");
     prm.leave_subsection();
   }
 
@@ -316,10 +315,7 @@ namespace unilateral::plate
     obstacle.parse_parameters(prm);
     load.parse_parameters(prm);
     output.parse_parameters(prm);
-    const std::string start = prm.get("Coarse-mesh start");
-    coarse_mesh_start = start == "on"  ? CoarseMeshStart::on :
-                        start == "off" ? CoarseMeshStart::off :
-                                         CoarseMeshStart::automatic;
+    coarse_mesh_start = prm.get_bool("Coarse-mesh start");
     prm.leave_subsection();
   }
 } // namespace unilateral::plate

@@ -98,14 +98,6 @@ namespace unilateral::plate
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
-  /// Plate/Coarse-mesh start: solve on coarser meshes first.
-  enum class CoarseMeshStart
-  {
-    automatic, ///< on for methods that start from a given iterate
-    on,
-    off
-  };
-
   struct Parameters
   {
     Geometry        geometry;
@@ -113,7 +105,9 @@ namespace unilateral::plate
     Obstacle        obstacle;
     Load            load;
     Output          output;
-    CoarseMeshStart coarse_mesh_start = CoarseMeshStart::automatic;
+    /// Plate/Coarse-mesh start: for methods that take a start, solve on
+    /// coarser meshes first.
+    bool coarse_mesh_start = true;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
