@@ -153,6 +153,79 @@ namespace unilateral::lcp
     return own_valid;
   }
 
+  bool
+  ActiveSetSystem::modify_factor(const std::vector<char> &fixed)
+  {
+    if (!own_valid || !own->reduced_index.empty())
+      return false;
+    std::vector<Index> newly_fixed, newly_free;
+    for (std::size_t i = 0; i < fixed.size(); ++i)
+      if (fixed[i] && !own->fixed[i])
+        newly_fixed.push_back(static_cast<Index>(i));
+      else if (!fixed[i] && own->fixed[i])
+        newly_free.push_back(static_cast<Index>(i));
+    const double changes = newly_fixed.size() + newly_free.size();
+    const double budget =
+      modification_budget * own->cholesky.factorisation_flops();
+    if (flops_per_change * changes > budget)
+      return false;
+
+    // Fixing first, then freeing: each freed column couples only to the
+    // indices free at that moment, so K stays consistent at every step.
+    const double flops_before = own->cholesky.modification_flops();
+    unsigned int processed    = 0;
+    // Over budget, or (after the first few changes, without an estimate
+    // from an earlier update) on course to exceed it.
+    const auto over_budget = [&]() {
+      const double spent = own->cholesky.modification_flops() - flops_before;
+      return spent > budget ||
+             (processed + 1 == early_estimate &&
+              spent / (processed + 1) * changes > budget);
+    };
+    std::vector<char> current = own->fixed;
+    bool              ok      = true;
+    for (const Index k : newly_fixed)
+      {
+        ok = own->cholesky.delete_row(k, fixed_diagonal[k]) && !over_budget();
+        if (!ok)
+          break;
+        current[k] = 1;
+        ++processed;
+      }
+    std::vector<Index>  rows;
+    std::vector<double> values;
+    for (std::size_t index = 0; ok && index < newly_free.size(); ++index)
+      {
+        const Index k = newly_free[index];
+        current[k]    = 0;
+        rows.clear();
+        values.clear();
+        for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+          if (!current[it.row()])
+            {
+              rows.push_back(it.row());
+              values.push_back(it.value());
+            }
+        ok = own->cholesky.add_row(k, rows, values) && !over_budget();
+        ++processed;
+      }
+    counters.factor_row_modifications += processed;
+    if (processed > 0)
+      flops_per_change =
+        (own->cholesky.modification_flops() - flops_before) / processed;
+    // The same test of singularity as a fresh factorisation (a freed index
+    // may leave a body without support).
+    ok = ok && own->cholesky.reciprocal_condition() >
+                 own->cholesky.minimum_rcond;
+    if (!ok)
+      {
+        own_valid = false;
+        return false;
+      }
+    own->fixed = fixed;
+    return true;
+  }
+
   void
   ActiveSetSystem::solve_with(const ActiveSetFactor &factor,
                               const DenseMatrix     &B,
@@ -301,6 +374,14 @@ namespace unilateral::lcp
       {
         solve_with(*own, rhs, solution);
         solved = true;
+      }
+    else if (modify_factor(fixed))
+      {
+        // The updated factor is exact up to the round-off of the updates:
+        // CG started from its answer confirms it in an iteration or two.
+        solved = preconditioned_cg(fixed, *own, rhs, solution, 4);
+        if (solved)
+          ++counters.modified_factorisations;
       }
     else
       {

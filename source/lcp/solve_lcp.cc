@@ -70,6 +70,8 @@ namespace unilateral::lcp
       into.symbolic_analyses += from.symbolic_analyses;
       into.numeric_factorisations += from.numeric_factorisations;
       into.reused_factorisations += from.reused_factorisations;
+      into.modified_factorisations += from.modified_factorisations;
+      into.factor_row_modifications += from.factor_row_modifications;
       into.cg_iterations += from.cg_iterations;
       into.triangular_solves += from.triangular_solves;
       into.matrix_vector_products += from.matrix_vector_products;

@@ -12,6 +12,13 @@ namespace unilateral::lcp
     cholmod_common common;
     cholmod_factor *factor       = nullptr;
     bool            factor_valid = false;
+    // The simplicial LDL' copy of factor that row modifications work on,
+    // null until the first one after a factorisation.
+    cholmod_factor *modified     = nullptr;
+    // Position of each index in the fill-reducing ordering (old-to-new).
+    std::vector<Index> inverse_ordering;
+    double          analysis_flops     = 0;
+    double          modification_flops = 0;
     // Fingerprint of the analysed pattern (size, nonzeros, hash).
     Index           pattern_size = -1;
     Index           pattern_nonzeros = -1;
@@ -32,9 +39,18 @@ namespace unilateral::lcp
 
     ~Implementation()
     {
+      if (modified != nullptr)
+        cholmod_free_factor(&modified, &common);
       if (factor != nullptr)
         cholmod_free_factor(&factor, &common);
       cholmod_finish(&common);
+    }
+
+    // The factor solves and modifications use.
+    cholmod_factor *
+    current() const
+    {
+      return modified != nullptr ? modified : factor;
     }
 
     // A view of an Eigen matrix as a CHOLMOD matrix (no copy).
@@ -127,9 +143,14 @@ namespace unilateral::lcp
         impl.pattern_size     = A.rows();
         impl.pattern_nonzeros = A.nonZeros();
         impl.pattern_hash     = hash;
+        impl.analysis_flops   = impl.common.fl;
+        impl.inverse_ordering.clear(); // computed on first modification
         ++counters.symbolic_analyses;
       }
 
+    if (impl.modified != nullptr)
+      cholmod_free_factor(&impl.modified, &impl.common);
+    impl.modification_flops = 0;
     cholmod_factorize(&matrix, impl.factor, &impl.common);
     ++counters.numeric_factorisations;
     impl.factor_valid = (impl.common.status == CHOLMOD_OK &&
@@ -146,6 +167,113 @@ namespace unilateral::lcp
           cholmod_rcond(impl.factor, &impl.common) > minimum_rcond;
       }
     return impl.factor_valid;
+  }
+
+  bool
+  SparseCholesky::prepare_modification()
+  {
+    auto &impl = *implementation;
+    if (!impl.factor_valid || impl.factor == nullptr)
+      return false;
+    if (impl.modified == nullptr)
+      {
+        impl.modified = cholmod_copy_factor(impl.factor, &impl.common);
+        if (impl.modified == nullptr)
+          return false;
+        // Simplicial LDL', columns not packed so that they can grow.
+        if (!cholmod_change_factor(CHOLMOD_REAL, false, false, false, false,
+                                   impl.modified, &impl.common))
+          {
+            cholmod_free_factor(&impl.modified, &impl.common);
+            return false;
+          }
+      }
+    if (impl.inverse_ordering.empty())
+      {
+        const Index *perm = static_cast<const Index *>(impl.factor->Perm);
+        impl.inverse_ordering.resize(impl.factor->n);
+        for (std::size_t position = 0; position < impl.factor->n; ++position)
+          impl.inverse_ordering[perm[position]] = static_cast<Index>(position);
+      }
+    return true;
+  }
+
+  bool
+  SparseCholesky::delete_row(const Index k, const double diagonal)
+  {
+    auto &impl = *implementation;
+    if (!prepare_modification())
+      return false;
+    const Index position = impl.inverse_ordering[k];
+    if (!cholmod_rowdel(position, nullptr, impl.modified, &impl.common))
+      {
+        impl.factor_valid = false;
+        return false;
+      }
+    impl.modification_flops += impl.common.modfl;
+    // CHOLMOD leaves the row of the identity (D_kk = 1); the matrix has
+    // @p diagonal there. In a simplicial LDL' factor each column starts
+    // with its entry of D.
+    auto *const Lp = static_cast<const Index *>(impl.modified->p);
+    static_cast<double *>(impl.modified->x)[Lp[position]] = diagonal;
+    return true;
+  }
+
+  bool
+  SparseCholesky::add_row(const Index                 k,
+                          const std::vector<Index>  &rows,
+                          const std::vector<double> &values)
+  {
+    auto &impl = *implementation;
+    if (!prepare_modification())
+      return false;
+    const Index position = impl.inverse_ordering[k];
+    // Column k of P A P^T as an n x 1 sparse matrix (need not be sorted).
+    std::vector<Index> column_start = {0, static_cast<Index>(rows.size())};
+    std::vector<Index> permuted_rows(rows.size());
+    for (std::size_t entry = 0; entry < rows.size(); ++entry)
+      permuted_rows[entry] = impl.inverse_ordering[rows[entry]];
+    cholmod_sparse column{};
+    column.nrow   = impl.modified->n;
+    column.ncol   = 1;
+    column.nzmax  = rows.size();
+    column.p      = column_start.data();
+    column.i      = permuted_rows.data();
+    column.x      = const_cast<double *>(values.data());
+    column.stype  = 0;
+    column.itype  = CHOLMOD_INT;
+    column.xtype  = CHOLMOD_REAL;
+    column.dtype  = CHOLMOD_DOUBLE;
+    column.sorted = 0;
+    column.packed = 1;
+    if (!cholmod_rowadd(position, &column, impl.modified, &impl.common))
+      {
+        impl.factor_valid = false;
+        return false;
+      }
+    impl.modification_flops += impl.common.modfl;
+    return true;
+  }
+
+  double
+  SparseCholesky::factorisation_flops() const
+  {
+    return implementation->analysis_flops;
+  }
+
+  double
+  SparseCholesky::modification_flops() const
+  {
+    return implementation->modification_flops;
+  }
+
+  double
+  SparseCholesky::reciprocal_condition() const
+  {
+    auto &impl = *implementation;
+    if (!impl.factor_valid || impl.current() == nullptr)
+      return 0;
+    return cholmod_rcond(impl.current(), &impl.common);
   }
 
   std::vector<Index>
@@ -183,11 +311,12 @@ namespace unilateral::lcp
   SparseCholesky::factor_nonzeros() const
   {
     const auto &impl = *implementation;
-    if (impl.factor == nullptr)
+    const cholmod_factor *factor = impl.current();
+    if (factor == nullptr)
       return 0;
-    if (impl.factor->is_super)
-      return static_cast<double>(impl.factor->xsize);
-    return static_cast<double>(impl.factor->nzmax);
+    if (factor->is_super)
+      return static_cast<double>(factor->xsize);
+    return static_cast<double>(factor->nzmax);
   }
 
   void
@@ -219,7 +348,7 @@ namespace unilateral::lcp
     rhs.xtype = CHOLMOD_REAL;
     rhs.dtype = CHOLMOD_DOUBLE;
     cholmod_dense *solution =
-      cholmod_solve(CHOLMOD_A, impl.factor, &rhs, &impl.common);
+      cholmod_solve(CHOLMOD_A, impl.current(), &rhs, &impl.common);
     if (solution == nullptr)
       throw std::runtime_error("CHOLMOD solve failed (status " +
                                std::to_string(impl.common.status) + ")");

@@ -171,6 +171,10 @@ namespace unilateral
       .set("symbolic_analyses", report.counters.symbolic_analyses)
       .set("numeric_factorisations", report.counters.numeric_factorisations)
       .set("reused_factorisations", report.counters.reused_factorisations)
+      .set("modified_factorisations",
+           report.counters.modified_factorisations)
+      .set("factor_row_modifications",
+           report.counters.factor_row_modifications)
       .set("cg_iterations", report.counters.cg_iterations)
       .set("triangular_solves", report.counters.triangular_solves)
       .set("matrix_vector_products", report.counters.matrix_vector_products);

@@ -32,6 +32,11 @@ namespace unilateral::lcp
     /// Systems solved with the factor of a nearby matrix as preconditioner
     /// instead of a new factorisation.
     unsigned int reused_factorisations  = 0;
+    /// Systems solved with a factor updated row by row from the previous
+    /// active set's (CHOLMOD's rowadd/rowdel) instead of a new one.
+    unsigned int modified_factorisations = 0;
+    /// Rows and columns added to or deleted from a factor in those updates.
+    unsigned int factor_row_modifications = 0;
     unsigned int cg_iterations          = 0;
     unsigned int triangular_solves      = 0; ///< one per right-hand side
     unsigned int matrix_vector_products = 0;

@@ -66,6 +66,44 @@ namespace unilateral::lcp
     bool
     has_factor() const;
 
+    /**
+     * @name Row modifications (CHOLMOD's Modify module)
+     *
+     * The factor of a matrix whose k-th row and column become those of a
+     * diagonal matrix (delete_row), or whose k-th row and column, so far
+     * diagonal, become the given column (add_row), is updated in place
+     * rather than recomputed: the active-set methods change a few rows per
+     * iteration. The first modification after a numeric factorisation works
+     * on a simplicial LDL' copy of the factor; the analysed (supernodal)
+     * factor stays for the next factorise(). Indices are those of the
+     * matrix, not of the fill-reducing ordering. Each returns false if
+     * CHOLMOD fails (the factor is then unusable until factorise()).
+     */
+    /// @{
+    bool
+    delete_row(Index k, double diagonal);
+
+    /// @p rows, @p values: the new column k (the diagonal included), with
+    /// entries only where the other rows are not themselves diagonal.
+    bool
+    add_row(Index k, const std::vector<Index> &rows,
+            const std::vector<double> &values);
+
+    /// Floating-point operations of one numeric factorisation of the
+    /// analysed pattern (CHOLMOD's estimate from the analysis).
+    double
+    factorisation_flops() const;
+
+    /// Floating-point operations of the modifications since the last
+    /// numeric factorisation.
+    double
+    modification_flops() const;
+
+    /// CHOLMOD's reciprocal condition estimate of the current factor.
+    double
+    reciprocal_condition() const;
+    /// @}
+
     /// Number of nonzeros in the factor L (0 if none).
     double
     factor_nonzeros() const;
@@ -78,6 +116,11 @@ namespace unilateral::lcp
 
   private:
     struct Implementation;
+
+    /// The working copy for modifications, made on first need; false if
+    /// there is no valid factor or CHOLMOD fails.
+    bool
+    prepare_modification();
     std::unique_ptr<Implementation> implementation;
   };
 } // namespace unilateral::lcp
