@@ -46,7 +46,9 @@ namespace unilateral::lcp
         "from u_eps (Ainsworth & Mihai, Section 4): it recovers the exact "
         "solution, usually in one iteration. The same step follows the "
         "approximate methods (psor, pdpc, interior_point), as Ainsworth & "
-        "Mihai suggest for PDPC; switch it off to see a method's own answer.");
+        "Mihai suggest for PDPC, and an exact method whose answer fails the "
+        "KKT check. Switch it off to see a method's own answer (a "
+        "regularised one is then reported 'inaccurate').");
       prm.declare_entry(
         "Maximum iterations",
         "0",
