@@ -327,7 +327,8 @@ def main():
         description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true")
-    parser.add_argument("--only", default="")
+    parser.add_argument("--only", default="",
+                        help="comma-separated substrings of problem names")
     parser.add_argument("--timeout", type=float, default=600)
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--skip-install", action="store_true")
@@ -349,7 +350,7 @@ def main():
                 time.strftime("%Y-%m-%d %H:%M"), ""]
     rows = []
     for name, kind, spec in problem_list(args.quick):
-        if args.only and args.only not in name:
+        if args.only and not any(part in name for part in args.only.split(",")):
             continue
         directory, why = export_problem(name, kind, spec, scenes)
         if directory is None:

@@ -91,10 +91,11 @@ namespace unilateral::lcp
 
     /// Flops of row modifications, as a fraction of those of a numeric
     /// factorisation, up to which a factor is updated rather than
-    /// recomputed. Modifications run simplicial, at about half the flops
-    /// per second of the supernodal factorisation (90 x 90 plate: 3 against
-    /// 5.7 GFlop/s), so 0.4 keeps an update below ~80 % of a refactorisation.
-    static constexpr double modification_budget = 0.4;
+    /// recomputed. Modifications run simplicial and memory-bound: about
+    /// half the flops per second of the supernodal factorisation on a
+    /// 90 x 90 plate (3 against 5.7 GFlop/s), far less on a 512 x 512 one,
+    /// where 0.4 made the solve 155 s instead of 110 s.
+    static constexpr double modification_budget = 0.1;
 
     /// Changes after which the cost of the whole update is extrapolated
     /// (and the update abandoned if it would exceed the budget).

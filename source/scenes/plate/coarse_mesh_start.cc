@@ -145,12 +145,19 @@ namespace unilateral::plate
     double largest_deflection = 0;
     for (const lcp::Index i : fine.problem.constrained)
       largest_deflection = std::max(largest_deflection, std::abs(u[i]));
+    const double h = std::max(fine.parameters.geometry.length_x /
+                                fine.parameters.geometry.n_x,
+                              fine.parameters.geometry.length_y /
+                                fine.parameters.geometry.n_y) /
+                     std::max(fine.parameters.geometry.length_x,
+                              fine.parameters.geometry.length_y);
+    const double contact_band = 2.4 * h * h * largest_deflection;
     lcp::Solution start;
     start.u = u;
     for (lcp::Index k = 0; k < fine.problem.n_constrained(); ++k)
       {
         const lcp::Index i = fine.problem.constrained[k];
-        if (u[i] - fine.problem.lower_bound[k] <= 3e-4 * largest_deflection)
+        if (u[i] - fine.problem.lower_bound[k] <= contact_band)
           {
             start.active_set.push_back(i);
             start.u[i] = fine.problem.lower_bound[k];
