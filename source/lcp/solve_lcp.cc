@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <limits>
+#include <memory>
 #include <ostream>
 #include <sstream>
 
@@ -114,6 +115,7 @@ namespace unilateral::lcp
       const Report check_report = solve_full(
         problem, check_parameters, check, progress, auto_regularisation);
       merge_counters(report.counters, check_report.counters);
+      merge_times(report, check_report, "infeasibility check: ");
       if (!check_report.converged() ||
           !(kkt_residuals(problem, check.u).max() <= parameters.kkt_tolerance))
         {
@@ -177,8 +179,31 @@ namespace unilateral::lcp
       // Stage 1: the method, on A + eps d I if it needs a definite matrix.
       if (!regularise)
         {
-          PhaseTimer timer(report, "solve");
-          run_method(info, problem, parameters, solution, report, progress);
+          const Solution start = solution;
+          {
+            PhaseTimer timer(report, "solve");
+            run_method(info, problem, parameters, solution, report, progress);
+          }
+          if (report.status == Status::singular &&
+              info.needs_definite_matrix && parameters.regularisation < 0 &&
+              auto_regularisation == 0)
+            {
+              // 'auto' on a scene that expected A to be definite, but it is
+              // not (an LCP read from files, from masonry: floating
+              // blocks): regularise after all, as the masonry scene does
+              // (1e-9), and project. The failed attempt's time and work
+              // stay in the report.
+              if (progress != nullptr)
+                *progress << "    " << report.message
+                          << "; regularising with eps = 1e-9 (auto)"
+                          << std::endl;
+              solution           = start;
+              Report regularised = solve_full(
+                problem, parameters, solution, progress, 1e-9);
+              merge_counters(regularised.counters, report.counters);
+              merge_times(regularised, report, "");
+              return regularised;
+            }
           if (report.status == Status::singular && info.needs_definite_matrix)
             report.message += "; regularise ('Solver/Regularisation' > 0)";
           if (report.status == Status::infeasible && info.name != "pdas")
@@ -238,7 +263,8 @@ namespace unilateral::lcp
       // with eps_k falling by 1e3 per stage, each warm-started from the
       // last, and A again after each stage. A projection that has not
       // settled in 50 iterations counts as wandering while a stage is left.
-      PhaseTimer   timer(report, "projection");
+      auto projection_timer =
+        std::make_unique<PhaseTimer>(report, "projection");
       const double mean_diagonal =
         problem.size() > 0 && problem.A.diagonal().mean() > 0 ?
           problem.A.diagonal().mean() :
@@ -308,6 +334,7 @@ namespace unilateral::lcp
               "that active set (check that every body can be supported), or "
               "set 'Solver/Projection = false' to keep the regularised one";
         }
+      projection_timer.reset(); // records the time before the return
       return report;
     }
   } // namespace

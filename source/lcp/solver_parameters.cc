@@ -37,7 +37,8 @@ namespace unilateral::lcp
         "need a positive definite matrix (psor, lssnn, pdas, block_pivoting), "
         "followed by the projection step. 'auto' takes the scene's choice: "
         "1e-9 for masonry (whose A is singular: blocks are free to move), 0 "
-        "for the plate and for LCP files. A number >= 0 overrides it.");
+        "for the plate and for LCP files, where 1e-9 follows if the method "
+        "meets a singular system. A number >= 0 overrides it.");
       prm.declare_entry(
         "Projection",
         "true",

@@ -201,6 +201,32 @@ main()
               << "\n";
   }
 
+  // 'auto' regularisation where the scene expected a definite A (an LCP
+  // read from files) but A is singular, as this chain's: PDAS meets a
+  // singular system, then regularises with 1e-9 and projects.
+  {
+    // Two bodies of two nodes each, each held at its first node; the load
+    // pulls that node off its support, so PDAS from u = 0 releases it and
+    // the body floats (A_FF singular). Solution: u = (0, -2, 0, -1).
+    DenseMatrix two_bodies = DenseMatrix::Zero(4, 4);
+    for (const Index first : {0, 2})
+      {
+        two_bodies(first, first) = two_bodies(first + 1, first + 1) = 1;
+        two_bodies(first, first + 1) = two_bodies(first + 1, first) = -1;
+      }
+    Vector load(4);
+    load << 1, -2, 0, -1;
+    const Report pdas = solve_with(
+      make_problem(two_bodies, load, {0, 2}, {0, 0}), {"pdas"}, u);
+    Vector exact(4);
+    exact << 0, -2, 0, -1;
+    std::cout << "pdas, eps = auto, singular A: " << to_string(pdas.status)
+              << ", regularised after all: "
+              << yes_no(pdas.regularisation > 0 && pdas.projected)
+              << ", u exact: " << yes_no(relative_difference(u, exact) < 1e-12)
+              << "\n";
+  }
+
   // Interior point: one analysis of the pattern for all its Newton systems.
   {
     SolverParameters parameters;
