@@ -251,7 +251,8 @@ namespace unilateral::lcp
       // (block pivoting's 1e-6) can stop a few indices short on large
       // plates (n1 = 64: KKT 2e-6). PDAS from there finishes the job.
       const bool exact_answer =
-        info.exact && !regularise &&
+        info.exact && !regularise && report.converged() &&
+        solution.u.size() == problem.size() &&
         kkt_residuals(problem, solution.u).max() <= parameters.kkt_tolerance;
       if (!report.converged() || !parameters.projection || exact_answer)
         return report;
