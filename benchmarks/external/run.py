@@ -128,10 +128,10 @@ def run_command(command, timeout=None, cwd=None):
 
 def install_and_build(skip_install, skip_build):
     if not skip_install:
-        for script in (os.path.join(ROOT, "install.sh"),
-                       os.path.join(HERE, "install.sh")):
-            log("== " + os.path.relpath(script, ROOT))
-            subprocess.run(["sh", script], check=True)
+        # The top-level install.sh with the drivers' packages added.
+        script = os.path.join(HERE, "install.sh")
+        log("== " + os.path.relpath(script, ROOT))
+        subprocess.run(["sh", script], check=True)
     if not skip_build:
         log("== building unilateral (build/) and the drivers "
             "(build-external/)")

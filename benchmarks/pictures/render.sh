@@ -12,7 +12,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 cd "$root"
 build=${BUILD_DIR:-build}
-if [ "$(id -u)" -eq 0 ]; then sudo=""; else sudo="sudo"; fi
 
 # --- ParaView -------------------------------------------------------------
 # Debian's paraview (5.11) brings pvbatch but not pvpython, which lives in
@@ -24,20 +23,8 @@ if [ "$(id -u)" -eq 0 ]; then sudo=""; else sudo="sudo"; fi
 # modules next to itself, before the system's. ParaView here is built for X
 # only (no EGL or OSMesa), and --force-offscreen-rendering without a display
 # crashes, so pvpython runs under Xvfb.
-packages="paraview xvfb python3-numpy"
-missing=""
-for package in $packages; do
-  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null |
-      grep -q "install ok installed"; then
-    missing="$missing $package"
-  fi
-done
-if [ -n "$missing" ]; then
-  echo "render.sh: installing$missing (ParaView takes about 630 MB)"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq \
-    --no-install-recommends $missing
-fi
+# (ParaView takes about 630 MB.)
+./install.sh paraview xvfb
 
 if dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null |
     grep -q "install ok installed"; then
@@ -61,7 +48,6 @@ fi
 
 # --- unilateral -------------------------------------------------------------
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  ./install.sh
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$build" -j2 --target unilateral
