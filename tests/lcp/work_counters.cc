@@ -59,6 +59,16 @@ namespace
     return A;
   }
 
+  // b_i = sin(1 + i): a load with no special structure.
+  Vector
+  smooth_load(const Index n)
+  {
+    Vector b(n);
+    for (Index i = 0; i < n; ++i)
+      b[i] = std::sin(1.0 + i);
+    return b;
+  }
+
   // A with the rows and columns in @p fixed replaced by their diagonal.
   SparseMatrix
   with_fixed(const SparseMatrix &A, const std::vector<char> &fixed)
@@ -89,9 +99,7 @@ main()
   {
     const SparseMatrix A = laplacian(12);
     const Index        n = A.rows();
-    Vector             b(n);
-    for (Index i = 0; i < n; ++i)
-      b[i] = std::sin(1.0 + i);
+    const Vector       b = smooth_load(n);
     Counters          counters;
     SparseCholesky    updated;
     std::vector<char> fixed(n, 0);
@@ -139,9 +147,7 @@ main()
     // that two changes cost far less than a factorisation).
     const SparseMatrix A = laplacian(40);
     const Index        n = A.rows();
-    Vector             b(n);
-    for (Index i = 0; i < n; ++i)
-      b[i] = std::sin(1.0 + i);
+    const Vector       b = smooth_load(n);
     Counters        system_counters;
     ActiveSetSystem system(A, system_counters);
     std::vector<char> X(n, 0);

@@ -96,34 +96,33 @@ namespace unilateral::lcp
             // size of its terms.
             std::vector<Index> violated;
             for (Index k = 0; k < problem.n_constrained(); ++k)
-              if (iteration == 0 && !given_active.empty())
-                {
-                  const Index i = problem.constrained[k];
-                  if (active[i] != given_active[i])
-                    violated.push_back(i);
-                }
-              else
-                {
-                  const Index  i = problem.constrained[k];
-                  double       magnitude = std::abs(problem.b[i]);
-                  double       diagonal  = 0;
-                  for (SparseMatrix::InnerIterator entry(problem.A, i); entry;
-                       ++entry)
-                    {
-                      magnitude += std::abs(entry.value() * u[entry.row()]);
-                      if (entry.row() == i)
-                        diagonal = entry.value();
-                    }
-                  const double tolerance =
-                    parameters.pdas.round_off * magnitude *
-                    ((diagonal > 0 ? 1.0 / diagonal : 0.0) + tau);
-                  const double test =
-                    (u[i] - problem.lower_bound[k]) - tau * lambda[i];
-                  const bool now_active =
-                    active[i] ? test < tolerance : test < -tolerance;
-                  if (now_active != static_cast<bool>(active[i]))
-                    violated.push_back(i);
-                }
+              {
+                const Index i = problem.constrained[k];
+                if (iteration == 0 && !given_active.empty())
+                  {
+                    if (active[i] != given_active[i])
+                      violated.push_back(i);
+                    continue;
+                  }
+                double magnitude = std::abs(problem.b[i]);
+                double diagonal  = 0;
+                for (SparseMatrix::InnerIterator entry(problem.A, i); entry;
+                     ++entry)
+                  {
+                    magnitude += std::abs(entry.value() * u[entry.row()]);
+                    if (entry.row() == i)
+                      diagonal = entry.value();
+                  }
+                const double tolerance =
+                  parameters.pdas.round_off * magnitude *
+                  ((diagonal > 0 ? 1.0 / diagonal : 0.0) + tau);
+                const double test =
+                  (u[i] - problem.lower_bound[k]) - tau * lambda[i];
+                const bool now_active =
+                  active[i] ? test < tolerance : test < -tolerance;
+                if (now_active != static_cast<bool>(active[i]))
+                  violated.push_back(i);
+              }
             if (iteration >= 1 && violated.empty())
               {
                 report.status = Status::converged;
