@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <unistd.h>
+
 namespace unilateral::lcp
 {
   namespace
@@ -154,9 +156,22 @@ namespace unilateral::lcp
   }
 
   bool
+  ActiveSetSystem::room_for_modified_copy() const
+  {
+    if (own->cholesky.has_modification_copy())
+      return true;
+    // Values and row indices, the simplicial copy's room to grow, and the
+    // supernodal copy it is converted from: about 24 bytes per entry.
+    const double copy_bytes = 24 * own->cholesky.factor_nonzeros();
+    const double available  = static_cast<double>(sysconf(_SC_AVPHYS_PAGES)) *
+                             static_cast<double>(sysconf(_SC_PAGESIZE));
+    return available <= 0 || copy_bytes < 0.5 * available;
+  }
+
+  bool
   ActiveSetSystem::modify_factor(const std::vector<char> &fixed)
   {
-    if (!own_valid || !own->reduced_index.empty())
+    if (!own_valid || !own->reduced_index.empty() || !room_for_modified_copy())
       return false;
     std::vector<Index> newly_fixed, newly_free;
     for (std::size_t i = 0; i < fixed.size(); ++i)
@@ -164,23 +179,25 @@ namespace unilateral::lcp
         newly_fixed.push_back(static_cast<Index>(i));
       else if (!fixed[i] && own->fixed[i])
         newly_free.push_back(static_cast<Index>(i));
-    const double changes = newly_fixed.size() + newly_free.size();
+    std::vector<Index> changed = newly_fixed;
+    changed.insert(changed.end(), newly_free.begin(), newly_free.end());
+    // The cost is predicted from the factor's structure before anything is
+    // copied or modified (the first modification converts the factor, which
+    // at a million unknowns costs seconds).
     const double budget =
       modification_budget * own->cholesky.factorisation_flops();
-    if (flops_per_change * changes > budget)
+    if (flops_per_path_entry *
+          own->cholesky.modification_path_entries(changed) >
+        budget)
       return false;
 
     // Fixing first, then freeing: each freed column couples only to the
     // indices free at that moment, so K stays consistent at every step.
     const double flops_before = own->cholesky.modification_flops();
     unsigned int processed    = 0;
-    // Over budget, or (after the first few changes, without an estimate
-    // from an earlier update) on course to exceed it.
+    // A safeguard only: the prediction is within a few percent.
     const auto over_budget = [&]() {
-      const double spent = own->cholesky.modification_flops() - flops_before;
-      return spent > budget ||
-             (processed + 1 == early_estimate &&
-              spent / (processed + 1) * changes > budget);
+      return own->cholesky.modification_flops() - flops_before > budget;
     };
     std::vector<char> current = own->fixed;
     bool              ok      = true;
@@ -211,8 +228,12 @@ namespace unilateral::lcp
       }
     counters.factor_row_modifications += processed;
     if (processed > 0)
-      flops_per_change =
-        (own->cholesky.modification_flops() - flops_before) / processed;
+      {
+        changed.resize(processed);
+        flops_per_path_entry =
+          (own->cholesky.modification_flops() - flops_before) /
+          own->cholesky.modification_path_entries(changed);
+      }
     // The same test of singularity as a fresh factorisation (a freed index
     // may leave a body without support).
     ok = ok && own->cholesky.reciprocal_condition() >

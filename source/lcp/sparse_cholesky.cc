@@ -17,6 +17,10 @@ namespace unilateral::lcp
     cholmod_factor *modified     = nullptr;
     // Position of each index in the fill-reducing ordering (old-to-new).
     std::vector<Index> inverse_ordering;
+    // For each position of the ordering: the entries of L in its column and
+    // in the columns of all its ancestors in the elimination tree (the
+    // columns a row modification at that position rewrites).
+    std::vector<double> path_entries;
     double          analysis_flops     = 0;
     double          modification_flops = 0;
     // Fingerprint of the analysed pattern (size, nonzeros, hash).
@@ -72,6 +76,18 @@ namespace unilateral::lcp
       matrix.packed = 1;
       return matrix;
     }
+
+    void
+    compute_inverse_ordering()
+    {
+      const Index *perm = static_cast<const Index *>(factor->Perm);
+      inverse_ordering.resize(factor->n);
+      for (std::size_t position = 0; position < factor->n; ++position)
+        inverse_ordering[perm[position]] = static_cast<Index>(position);
+    }
+
+    void
+    compute_path_entries();
 
     static std::uint64_t
     hash_pattern(const SparseMatrix &A)
@@ -145,6 +161,7 @@ namespace unilateral::lcp
         impl.pattern_hash     = hash;
         impl.analysis_flops   = impl.common.fl;
         impl.inverse_ordering.clear(); // computed on first modification
+        impl.path_entries.clear();
         ++counters.symbolic_analyses;
       }
 
@@ -189,13 +206,72 @@ namespace unilateral::lcp
           }
       }
     if (impl.inverse_ordering.empty())
-      {
-        const Index *perm = static_cast<const Index *>(impl.factor->Perm);
-        impl.inverse_ordering.resize(impl.factor->n);
-        for (std::size_t position = 0; position < impl.factor->n; ++position)
-          impl.inverse_ordering[perm[position]] = static_cast<Index>(position);
-      }
+      impl.compute_inverse_ordering();
     return true;
+  }
+
+  void
+  SparseCholesky::Implementation::compute_path_entries()
+  {
+    const cholmod_factor &L = *factor;
+    const std::size_t     n = L.n;
+    path_entries.assign(n, 0.);
+    // Parents have larger positions than their children: one backward pass.
+    if (L.is_super)
+      {
+        const auto *super    = static_cast<const Index *>(L.super);
+        const auto *row_from = static_cast<const Index *>(L.pi);
+        const auto *rows     = static_cast<const Index *>(L.s);
+        for (std::size_t s = L.nsuper; s-- > 0;)
+          {
+            const Index columns = super[s + 1] - super[s];
+            const Index length  = row_from[s + 1] - row_from[s];
+            // The parent of the supernode's last column: its first row
+            // below the diagonal block. Column j of the supernode holds
+            // length - (j - first) entries.
+            double tail = length > columns ?
+                            path_entries[rows[row_from[s] + columns]] :
+                            0.;
+            for (Index j = super[s + 1]; j-- > super[s];)
+              {
+                tail += length - (j - super[s]);
+                path_entries[j] = tail;
+              }
+          }
+      }
+    else
+      {
+        const auto *column_start = static_cast<const Index *>(L.p);
+        const auto *rows         = static_cast<const Index *>(L.i);
+        const auto *entries      = static_cast<const Index *>(L.nz);
+        for (std::size_t j = n; j-- > 0;)
+          {
+            Index parent = -1;
+            for (Index e = column_start[j] + 1;
+                 e < column_start[j] + entries[j]; ++e)
+              if (parent < 0 || rows[e] < parent)
+                parent = rows[e];
+            path_entries[j] =
+              entries[j] + (parent >= 0 ? path_entries[parent] : 0.);
+          }
+      }
+  }
+
+  double
+  SparseCholesky::modification_path_entries(
+    const std::vector<Index> &indices) const
+  {
+    auto &impl = *implementation;
+    if (impl.factor == nullptr)
+      return 0;
+    if (impl.path_entries.empty())
+      impl.compute_path_entries();
+    if (impl.inverse_ordering.empty())
+      impl.compute_inverse_ordering();
+    double total = 0;
+    for (const Index k : indices)
+      total += impl.path_entries[impl.inverse_ordering[k]];
+    return total;
   }
 
   bool
@@ -253,6 +329,12 @@ namespace unilateral::lcp
       }
     impl.modification_flops += impl.common.modfl;
     return true;
+  }
+
+  bool
+  SparseCholesky::has_modification_copy() const
+  {
+    return implementation->modified != nullptr;
   }
 
   double

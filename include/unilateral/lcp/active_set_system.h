@@ -50,12 +50,13 @@ namespace unilateral::lcp
    * Factorisations are reused. A factor for exactly this X is used directly.
    * A factor of the full pattern for another X is updated row by row to
    * this X (CHOLMOD's rowdel for each newly fixed index, rowadd for each
-   * newly free one) as long as the updates cost less than
-   * modification_budget times a numeric factorisation in floating-point
-   * operations; its answer is then checked by the CG below, started from
+   * newly free one) as long as the updates, predicted from the factor's
+   * structure, cost less than modification_budget times a numeric
+   * factorisation in floating-point operations and its copy fits in
+   * memory; the answer is then checked by the CG below, started from
    * it. Otherwise a factor for a nearby matrix, one whose fixed set differs
-   * in at most
-   * max_changes indices (K then differs by a matrix of rank <= 2 changes), or
+   * in at most max_changes indices (K then differs by a matrix of rank
+   * <= 2 changes), or
    * an inherited factor of A + eps I for the same X, preconditions conjugate
    * gradients, which then converge in about 2 changes + 1 iterations. Only
    * if CG does not reach the direct solver's accuracy in its iteration
@@ -93,13 +94,11 @@ namespace unilateral::lcp
     /// factorisation, up to which a factor is updated rather than
     /// recomputed. Modifications run simplicial and memory-bound: about
     /// half the flops per second of the supernodal factorisation on a
-    /// 90 x 90 plate (3 against 5.7 GFlop/s), far less on a 512 x 512 one,
-    /// where 0.4 made the solve 155 s instead of 110 s.
+    /// 90 x 90 plate (3 against 5.7 GFlop/s), and the first one after a
+    /// factorisation copies the factor. The cost is predicted before that
+    /// copy (flops_per_path_entry); without the prediction, a 512 x 512
+    /// plate spent 25 s on a copy and an abandoned update.
     static constexpr double modification_budget = 0.1;
-
-    /// Changes after which the cost of the whole update is extrapolated
-    /// (and the update abandoned if it would exceed the budget).
-    static constexpr unsigned int early_estimate = 8;
 
     /// Fraction of fixed indices above which A_FF is factorised on its own.
     static constexpr double reduced_threshold = 1.0 / 6.0;
@@ -113,6 +112,13 @@ namespace unilateral::lcp
     /// CHOLMOD fails, or if the result is numerically singular.
     bool
     modify_factor(const std::vector<char> &fixed);
+
+    /// Whether the simplicial copy the first update makes fits in half the
+    /// free memory. It doubles the factor's memory: a 512 x 512 plate
+    /// (nnz(L) = 3.8e8) peaks at 12 GB with updates and 4.8 GB without
+    /// (143 s against 158 s on 24 GB); on a smaller machine it refactorises.
+    bool
+    room_for_modified_copy() const;
 
     /// K(X) y: A on the free part, the diagonal on the fixed part.
     void
@@ -145,8 +151,11 @@ namespace unilateral::lcp
     std::shared_ptr<const ActiveSetFactor>  inherited;
     /// Diagonal used for fixed rows: A_jj if positive, else the mean diagonal.
     Vector                                  fixed_diagonal;
-    /// Modification flops per changed index in the last update (0 before
-    /// the first): predicts whether the next one fits the budget.
-    double                                  flops_per_change = 0;
+    /// Modification flops per entry of L on the changed rows' elimination
+    /// paths (SparseCholesky::modification_path_entries), as measured in
+    /// the last update: predicts the cost of the next one. CHOLMOD's update
+    /// and downdate do about four per entry (3.9-4.0 measured on the plate
+    /// from 90 x 90 to 512 x 512).
+    double                                  flops_per_path_entry = 4;
   };
 } // namespace unilateral::lcp

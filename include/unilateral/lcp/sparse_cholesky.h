@@ -89,10 +89,22 @@ namespace unilateral::lcp
     add_row(Index k, const std::vector<Index> &rows,
             const std::vector<double> &values);
 
+    /// Whether the simplicial copy for modifications exists (it is made by
+    /// the first modification after a numeric factorisation).
+    bool
+    has_modification_copy() const;
+
     /// Floating-point operations of one numeric factorisation of the
     /// analysed pattern (CHOLMOD's estimate from the analysis).
     double
     factorisation_flops() const;
+
+    /// Entries of L that modifications of the rows @p indices rewrite: for
+    /// each, its column and those of its ancestors in the elimination tree
+    /// (CHOLMOD's update follows that path). Known before any modification
+    /// is made, from the analysed factor alone.
+    double
+    modification_path_entries(const std::vector<Index> &indices) const;
 
     /// Floating-point operations of the modifications since the last
     /// numeric factorisation.
