@@ -132,6 +132,43 @@ namespace unilateral::lcp
       solution      = check;
     }
 
+    /**
+     * PDAS that cycles (Pdas::wandering_limit) hands over to the interior
+     * point: PDPC, which converges whatever the start, then the projection
+     * from its answer, which is PDAS again but near the solution. The
+     * running bond walls need it from m = 30 on (g = H/2). The answer is
+     * exact or the failure is reported; the note says what happened.
+     */
+    Report
+    continue_from_interior_point(const Problem          &problem,
+                                 const SolverParameters &parameters,
+                                 Solution               &solution,
+                                 const Report           &pdas_report,
+                                 std::ostream           *progress,
+                                 const double            auto_regularisation)
+    {
+      if (progress != nullptr)
+        *progress << "    " << pdas_report.message
+                  << "; continuing from the interior point (pdpc)"
+                  << std::endl;
+      SolverParameters pdpc_parameters = parameters;
+      pdpc_parameters.method           = "pdpc";
+      pdpc_parameters.projection       = true;
+      solution                         = Solution();
+      Report report                    = solve_full(
+        problem, pdpc_parameters, solution, progress, auto_regularisation);
+      report.solver = pdas_report.solver;
+      report.iterations += pdas_report.iterations;
+      merge_counters(report.counters, pdas_report.counters);
+      merge_times(report, pdas_report, "pdas (cycled): ");
+      const std::string note = pdas_report.message + " after " +
+                               std::to_string(pdas_report.iterations) +
+                               " iterations; continued from pdpc's answer";
+      report.message =
+        report.message.empty() ? note : note + "; " + report.message;
+      return report;
+    }
+
     // The method alone on the problem as given (no regularisation).
     void
     run_method(const SolverInfo       &info,
@@ -230,6 +267,14 @@ namespace unilateral::lcp
           PhaseTimer timer(report, "solve");
           run_method(info, regularised, parameters, solution, report, progress);
         }
+      if (info.name == "pdas" && report.status == Status::iteration_limit &&
+          parameters.max_iterations == 0)
+        return continue_from_interior_point(problem,
+                                            parameters,
+                                            solution,
+                                            report,
+                                            progress,
+                                            auto_regularisation);
       if (regularise && !parameters.projection && report.converged())
         {
           // A small KKT residual of the answer to A + eps I against A bounds

@@ -29,6 +29,12 @@
 // 4. Graves' claim that an LCP has no solution is checked by PDAS: running
 //    bond, m = 5, without load (u = 0 solves it), Graves on the Schur
 //    complement entered Case 2 through round-off and reported 'infeasible'.
+//
+// 5. PDAS cycles on running bond walls from m = 30 on (g = H/2: bricks over
+//    the settled base rest on a corner in neutral equilibrium): it reached
+//    its 500-iteration limit. It now stops after 50 iterations without a
+//    new low in violated constraints and continues from PDPC's answer.
+//    Checked at m = 30 against PDPC alone.
 #include <unilateral/lcp/problem.h>
 #include <unilateral/lcp/report.h>
 #include <unilateral/scenes/scene.h>
@@ -216,6 +222,38 @@ namespace
                         std::string::npos)
               << "\n";
   }
+
+  void
+  pdas_cycling_continued()
+  {
+    std::cout << "5. PDAS cycling on the running bond\n";
+    const auto wall = [](const std::string &method) {
+      return run(parse("subsection Masonry\n"
+                       "  set Geometry = running bond\n"
+                       "  set Blocks per side = 30\n"
+                       "end\n"
+                       "subsection Solver\n"
+                       "  set Method = " +
+                       method + "\nend\n"),
+                 "stress");
+    };
+    const Run  reference   = wall("pdpc");
+    const auto reference_u = reference.scene->nodal_displacements();
+    const Run  result      = wall("pdas");
+    std::cout << "  running bond, m = 30: pdpc "
+              << lcp::to_string(reference.report.status) << ", pdas "
+              << lcp::to_string(result.report.status)
+              << ", cycling noted: "
+              << yes_no(result.report.message.find("cycling") !=
+                        std::string::npos)
+              << ", KKT <= 1e-10: "
+              << yes_no(result.report.kkt.max() <= 1e-10)
+              << ", u as pdpc's (1e-8): "
+              << yes_no(difference(result.scene->nodal_displacements(),
+                                   reference_u) <=
+                        1e-8 * largest(reference_u))
+              << "\n";
+  }
 } // namespace
 
 int
@@ -226,4 +264,5 @@ main()
   work_check_on_the_wall();
   regularised_without_projection();
   graves_claim_checked();
+  pdas_cycling_continued();
 }

@@ -29,6 +29,10 @@ namespace unilateral::lcp
     public:
       using Solver::Solver;
 
+      /// Iterations without a new low in the count of violated indices
+      /// after which PDAS (at its default iteration limit) stops as cycling.
+      static constexpr unsigned int wandering_limit = 50;
+
       void
       solve(const Problem &problem,
             Solution      &solution,
@@ -126,6 +130,23 @@ namespace unilateral::lcp
             if (iteration >= 1 && violated.empty())
               {
                 report.status = Status::converged;
+                break;
+              }
+            // Cycling: the count of violated indices has not reached a new
+            // low for long (running bond walls with a large settlement,
+            // whose bricks rest on a corner in neutral equilibrium). Murty's
+            // rule would end it, one index per factorisation; with the
+            // default limit PDAS stops instead and the driver continues
+            // from an interior point (solve_lcp).
+            if (parameters.max_iterations == 0 && safeguard > 0 &&
+                without_progress > wandering_limit)
+              {
+                report.status  = Status::iteration_limit;
+                report.message = "PDAS did not settle: the number of "
+                                 "violated constraints has not fallen below " +
+                                 std::to_string(fewest_violations) + " in " +
+                                 std::to_string(wandering_limit) +
+                                 " iterations (cycling)";
                 break;
               }
             if (iteration >= limit)
