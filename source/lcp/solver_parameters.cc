@@ -57,7 +57,8 @@ namespace unilateral::lcp
         "Iteration limit of the method; 0 takes each method's default "
         "(psor: 100000 sweeps, lssnn: 3|S| + 100, pdas/pdpc/interior_point: "
         "500, block_pivoting: 10|S| + 100, graves: 10|S| + 100). Reaching it "
-        "is reported as status 'iteration limit', never as a solution.");
+        "is reported as status 'iteration limit', never as a solution; at 0, "
+        "PDAS that cycles continues from PDPC (see PDAS/Safeguard).");
       prm.declare_entry(
         "Maximum dense size",
         "6000",
@@ -125,8 +126,10 @@ namespace unilateral::lcp
         "iterations without fewer violated indices than the best so far, "
         "change one index at a time (Murty's least-index rule) until there "
         "are fewer. Plain PDAS can wander without settling when A is not an "
-        "M-matrix (running bond walls with a large gap). 0: the paper's PDAS "
-        "without it.");
+        "M-matrix (running bond walls with a large gap). With the default "
+        "'Maximum iterations', PDAS that finds no fewer for 50 iterations "
+        "stops as cycling and the solve continues from PDPC's answer (noted "
+        "in the report). 0: the paper's PDAS without either.");
       prm.leave_subsection();
 
       prm.enter_subsection("PDPC");
