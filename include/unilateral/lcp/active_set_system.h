@@ -92,13 +92,14 @@ namespace unilateral::lcp
 
     /// Flops of row modifications, as a fraction of those of a numeric
     /// factorisation, up to which a factor is updated rather than
-    /// recomputed. Modifications run simplicial and memory-bound: about
-    /// half the flops per second of the supernodal factorisation on a
-    /// 90 x 90 plate (3 against 5.7 GFlop/s), and the first one after a
-    /// factorisation copies the factor. The cost is predicted before that
-    /// copy (flops_per_path_entry); without the prediction, a 512 x 512
-    /// plate spent 25 s on a copy and an abandoned update.
-    static constexpr double modification_budget = 0.1;
+    /// recomputed. Modifications run simplicial and memory-bound at 2-5
+    /// GFlop/s, while the supernodal factorisation speeds up with size (8
+    /// GFlop/s on a 90 x 90 plate, 38 on 512 x 512), so the break-even
+    /// fraction falls with size. 0.25 against 0.1: laminae m = 225
+    /// 46.6 -> 40.1 s, 512 x 512 plate 143 -> 149 s, 90 x 90 the same;
+    /// 0.5 gains nothing more. The cost is predicted before the first
+    /// update copies the factor (flops_per_path_entry).
+    static constexpr double modification_budget = 0.25;
 
     /// Fraction of fixed indices above which A_FF is factorised on its own.
     static constexpr double reduced_threshold = 1.0 / 6.0;
@@ -116,7 +117,8 @@ namespace unilateral::lcp
     /// Whether the simplicial copy the first update makes fits in half the
     /// free memory. It doubles the factor's memory: a 512 x 512 plate
     /// (nnz(L) = 3.8e8) peaks at 12 GB with updates and 4.8 GB without
-    /// (143 s against 158 s on 24 GB); on a smaller machine it refactorises.
+    /// (143-149 s against 158 s on 24 GB); on a smaller machine it
+    /// refactorises.
     bool
     room_for_modified_copy() const;
 
