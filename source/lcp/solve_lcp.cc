@@ -85,13 +85,6 @@ namespace unilateral::lcp
         into.add_time(prefix + phase, seconds);
     }
 
-    /**
-     * A claim that the LCP has no solution is checked with PDAS, which
-     * never makes one (it ends singular or at its limit instead). Graves
-     * can enter its Case 2 through round-off, as Ainsworth & Mihai report:
-     * running bond, m = 5, without load, where u = 0 solves it. If PDAS
-     * solves the LCP, its answer is given and the note says why.
-     */
     Report
     solve_full(const Problem          &problem,
                const SolverParameters &parameters,
@@ -99,6 +92,31 @@ namespace unilateral::lcp
                std::ostream           *progress,
                double                  auto_regularisation);
 
+    // Another method as a user would run it, regularised if need be and
+    // projected, for the checks and continuations below.
+    Report
+    solve_full_with(const std::string      &method,
+                    const Problem          &problem,
+                    const SolverParameters &parameters,
+                    Solution               &solution,
+                    std::ostream           *progress,
+                    const double            auto_regularisation)
+    {
+      SolverParameters method_parameters = parameters;
+      method_parameters.method           = method;
+      method_parameters.projection       = true;
+      solution                           = Solution();
+      return solve_full(
+        problem, method_parameters, solution, progress, auto_regularisation);
+    }
+
+    /**
+     * A claim that the LCP has no solution is checked with PDAS, which
+     * never makes one (it ends singular or at its limit instead). Graves
+     * can enter its Case 2 through round-off, as Ainsworth & Mihai report:
+     * running bond, m = 5, without load, where u = 0 solves it. If PDAS
+     * solves the LCP, its answer is given and the note says why.
+     */
     void
     check_infeasibility_claim(const Problem          &problem,
                               const SolverParameters &parameters,
@@ -107,13 +125,9 @@ namespace unilateral::lcp
                               std::ostream           *progress,
                               const double            auto_regularisation)
     {
-      // PDAS as a user would run it: regularised if need be, then projected.
-      SolverParameters check_parameters = parameters;
-      check_parameters.method           = "pdas";
-      check_parameters.projection       = true;
       Solution     check;
-      const Report check_report = solve_full(
-        problem, check_parameters, check, progress, auto_regularisation);
+      const Report check_report = solve_full_with(
+        "pdas", problem, parameters, check, progress, auto_regularisation);
       merge_counters(report.counters, check_report.counters);
       merge_times(report, check_report, "infeasibility check: ");
       if (!check_report.converged() ||
@@ -151,12 +165,8 @@ namespace unilateral::lcp
         *progress << "    " << pdas_report.message
                   << "; continuing from the interior point (pdpc)"
                   << std::endl;
-      SolverParameters pdpc_parameters = parameters;
-      pdpc_parameters.method           = "pdpc";
-      pdpc_parameters.projection       = true;
-      solution                         = Solution();
-      Report report                    = solve_full(
-        problem, pdpc_parameters, solution, progress, auto_regularisation);
+      Report report = solve_full_with(
+        "pdpc", problem, parameters, solution, progress, auto_regularisation);
       report.solver = pdas_report.solver;
       report.iterations += pdas_report.iterations;
       merge_counters(report.counters, pdas_report.counters);

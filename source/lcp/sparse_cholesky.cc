@@ -1,6 +1,5 @@
 #include <unilateral/lcp/sparse_cholesky.h>
 
-
 #include <cholmod.h>
 
 #include <stdexcept>
@@ -77,13 +76,19 @@ namespace unilateral::lcp
       return matrix;
     }
 
-    void
-    compute_inverse_ordering()
+    // Position of index k in the fill-reducing ordering; the inverse of
+    // the analysis' ordering is computed on first need.
+    Index
+    position_of(const Index k)
     {
-      const Index *perm = static_cast<const Index *>(factor->Perm);
-      inverse_ordering.resize(factor->n);
-      for (std::size_t position = 0; position < factor->n; ++position)
-        inverse_ordering[perm[position]] = static_cast<Index>(position);
+      if (inverse_ordering.empty())
+        {
+          const Index *perm = static_cast<const Index *>(factor->Perm);
+          inverse_ordering.resize(factor->n);
+          for (std::size_t position = 0; position < factor->n; ++position)
+            inverse_ordering[perm[position]] = static_cast<Index>(position);
+        }
+      return inverse_ordering[k];
     }
 
     void
@@ -160,7 +165,7 @@ namespace unilateral::lcp
         impl.pattern_nonzeros = A.nonZeros();
         impl.pattern_hash     = hash;
         impl.analysis_flops   = impl.common.fl;
-        impl.inverse_ordering.clear(); // computed on first modification
+        impl.inverse_ordering.clear(); // both computed on first need
         impl.path_entries.clear();
         ++counters.symbolic_analyses;
       }
@@ -205,8 +210,6 @@ namespace unilateral::lcp
             return false;
           }
       }
-    if (impl.inverse_ordering.empty())
-      impl.compute_inverse_ordering();
     return true;
   }
 
@@ -266,11 +269,9 @@ namespace unilateral::lcp
       return 0;
     if (impl.path_entries.empty())
       impl.compute_path_entries();
-    if (impl.inverse_ordering.empty())
-      impl.compute_inverse_ordering();
     double total = 0;
     for (const Index k : indices)
-      total += impl.path_entries[impl.inverse_ordering[k]];
+      total += impl.path_entries[impl.position_of(k)];
     return total;
   }
 
@@ -280,7 +281,7 @@ namespace unilateral::lcp
     auto &impl = *implementation;
     if (!prepare_modification())
       return false;
-    const Index position = impl.inverse_ordering[k];
+    const Index position = impl.position_of(k);
     if (!cholmod_rowdel(position, nullptr, impl.modified, &impl.common))
       {
         impl.factor_valid = false;
@@ -303,12 +304,12 @@ namespace unilateral::lcp
     auto &impl = *implementation;
     if (!prepare_modification())
       return false;
-    const Index position = impl.inverse_ordering[k];
+    const Index position = impl.position_of(k);
     // Column k of P A P^T as an n x 1 sparse matrix (need not be sorted).
     std::vector<Index> column_start = {0, static_cast<Index>(rows.size())};
     std::vector<Index> permuted_rows(rows.size());
     for (std::size_t entry = 0; entry < rows.size(); ++entry)
-      permuted_rows[entry] = impl.inverse_ordering[rows[entry]];
+      permuted_rows[entry] = impl.position_of(rows[entry]);
     cholmod_sparse column{};
     column.nrow   = impl.modified->n;
     column.ncol   = 1;

@@ -22,8 +22,8 @@
  * kg and mm, above eps_1 = 1e-10. The test (55) therefore accepts a residual
  * at that floor (100 epsilon times those terms), or one that has stopped
  * falling for three steps with the gap met (the floor is higher on larger
- * meshes); the final KKT check of the driver still judges the answer. A non-finite iterate ends the run as a
- * breakdown instead of iterating on.
+ * meshes); the final KKT check of the driver still judges the answer. A
+ * non-finite iterate ends the run as a breakdown instead of iterating on.
  */
 #include <unilateral/lcp/shifted_system.h>
 #include <unilateral/lcp/solver.h>

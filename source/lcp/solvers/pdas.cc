@@ -133,8 +133,8 @@ namespace unilateral::lcp
                 break;
               }
             // Cycling: the count of violated indices has not reached a new
-            // low for long (running bond walls with a large settlement,
-            // whose bricks rest on a corner in neutral equilibrium). Murty's
+            // low for long (running bond walls with a large settlement, from
+            // m = 30 on; nearly degenerate contacts, we guess). Murty's
             // rule would end it, one index per factorisation; with the
             // default limit PDAS stops instead and the driver continues
             // from an interior point (solve_lcp).

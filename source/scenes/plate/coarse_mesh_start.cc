@@ -136,9 +136,10 @@ namespace unilateral::plate
           }
       }
     // The first active set: the fine nodes where the interpolated coarse
-    // plate lies on psi or within 3e-4 of its largest deflection above it
-    // (the interpolation error; the test on u would not do, for
-    // lambda = A u - b of an interpolated field is noise of either sign).
+    // plate lies on psi or within 2.4 (h/L)^2 of its largest deflection
+    // above it, a band of the size of the O(h^2) interpolation error (3e-4
+    // at 90 x 90); the test on u would not do, for
+    // lambda = A u - b of an interpolated field is noise of either sign.
     // Measured at 90 x 90 on psi1-psi3: fewer and smaller changes than the
     // coarse contact set itself (psi3 f1: 6 instead of 7 iterations, 319
     // instead of 664 changes after the first). Those nodes start on psi.

@@ -299,7 +299,7 @@ namespace unilateral::plate
       "cells per side, and start the solver from that solution evaluated at "
       "the nodes of this mesh (the bicubic field and its derivatives, "
       "exactly). The active set is then nearly right from the start: at 90 x "
-      "90 PDAS needs 7 iterations instead of 37. Used with an obstacle, "
+      "90 PDAS needs 6 iterations instead of 37. Used with an obstacle, "
       "meshes of at least 16 cells per side and the methods that take a "
       "start (pdas, psor); the others keep the paper's start. false: the "
       "method's own start always.");
