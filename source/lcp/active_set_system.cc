@@ -72,7 +72,7 @@ namespace unilateral::lcp
   }
 
   bool
-  ActiveSetSystem::factorise(const std::vector<char> &fixed)
+  ActiveSetSystem::factorise(const std::vector<char> &fixed, const double shift)
   {
     const Index n       = A.rows();
     Index       n_fixed = 0;
@@ -99,7 +99,7 @@ namespace unilateral::lcp
               if (fixed[i] || fixed[j])
                 reduced.valuePtr()[k] = (i == j) ? fixed_diagonal[i] : 0.0;
               else
-                reduced.valuePtr()[k] = A.valuePtr()[k];
+                reduced.valuePtr()[k] = A.valuePtr()[k] + (i == j ? shift : 0.0);
             }
         own_valid = own->cholesky.factorise(reduced, counters);
         return own_valid;
@@ -145,7 +145,7 @@ namespace unilateral::lcp
               {
                 row_index[entry] = static_cast<SparseMatrix::StorageIndex>(
                   own->reduced_index[it.row()]);
-                value[entry] = it.value();
+                value[entry] = it.value() + (it.row() == j ? shift : 0.0);
                 ++entry;
               }
           column_start[own->reduced_index[j] + 1] =
@@ -246,6 +246,58 @@ namespace unilateral::lcp
       }
     own->fixed = fixed;
     return true;
+  }
+
+  bool
+  ActiveSetSystem::prepare_factor(const std::vector<char> &fixed)
+  {
+    if (own_valid && own->fixed == fixed)
+      return true;
+    if (modify_factor(fixed))
+      {
+        ++counters.modified_factorisations;
+        return true;
+      }
+    return factorise(fixed);
+  }
+
+  Vector
+  ActiveSetSystem::near_null_direction(const std::vector<char> &fixed)
+  {
+    const Index  n    = A.rows();
+    const double mean = A.diagonal().mean() > 0 ? A.diagonal().mean() : 1.0;
+    // The shifted matrix is definite by construction; the singularity test
+    // would refuse exactly what is looked for.
+    const double minimum_rcond  = own->cholesky.minimum_rcond;
+    own->cholesky.minimum_rcond = 0;
+    const bool factorised       = factorise(fixed, 1e-10 * mean);
+    own->cholesky.minimum_rcond = minimum_rcond;
+    Vector direction;
+    if (factorised)
+      {
+        // A fixed pseudo-random start (deterministic runs), zero on X.
+        DenseMatrix start(n, 1);
+        unsigned long long state = 0x9e3779b97f4a7c15ULL;
+        for (Index i = 0; i < n; ++i)
+          {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            start(i, 0) =
+              fixed[i] ? 0.0 : static_cast<double>(state % 2001) / 1000.0 - 1.0;
+          }
+        DenseMatrix result;
+        solve_with(*own, start, result);
+        direction = result.col(0);
+        for (Index i = 0; i < n; ++i)
+          if (fixed[i])
+            direction[i] = 0;
+        const double largest = direction.lpNorm<Eigen::Infinity>();
+        if (largest > 0)
+          direction /= largest;
+      }
+    own_valid = false; // a factor of the shifted matrix
+    return direction;
   }
 
   void

@@ -175,6 +175,8 @@ namespace unilateral
            report.counters.modified_factorisations)
       .set("factor_row_modifications",
            report.counters.factor_row_modifications)
+      .set("resolved_subsets", report.counters.resolved_subsets)
+      .set("resolved_indices", report.counters.resolved_indices)
       .set("cg_iterations", report.counters.cg_iterations)
       .set("triangular_solves", report.counters.triangular_solves)
       .set("matrix_vector_products", report.counters.matrix_vector_products);

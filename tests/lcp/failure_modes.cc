@@ -95,8 +95,12 @@ main()
     SolverParameters parameters;
     parameters.max_iterations = 2;
     Vector u;
-    report_solver("pdas limited to 2 iterations",
-                  solve_with(problem, {"pdas"}, u, -1, parameters));
+    // The paper's PDAS (no safeguards: the exact resolution of the front
+    // would finish this chain within the limit).
+    SolverParameters plain_pdas = parameters;
+    plain_pdas.pdas.safeguard   = 0;
+    report_solver("pdas without safeguards limited to 2 iterations",
+                  solve_with(problem, {"pdas"}, u, -1, plain_pdas));
     report_solver("psor limited to 2 sweeps",
                   solve_with(problem, {"psor"}, u, -1, parameters));
     report_solver("block_pivoting limited to 2 iterations",
@@ -130,10 +134,24 @@ main()
     Vector b(2);
     b << 1, -1; // index 0 leaves its bound: A itself must be solved
     Vector u;
-    report_solver("pdas, unregularised, floating body",
-                  solve_with(make_problem(A, b, {0}, {0}), {"pdas"}, u, 0));
-    // Without net load the floating body has a family of solutions; with
-    // regularisation and the projection one of them is found, and certified.
+    // Without net load the floating body has a family of solutions,
+    // u = (t, t - 1) for t >= 0. The active set {} is singular; PDAS
+    // closes the constraint that the free motion moves and certifies
+    // u = (0, -1).
+    const Report unregularised =
+      solve_with(make_problem(A, b, {0}, {0}), {"pdas"}, u, 0);
+    report_solver("pdas, unregularised, floating body without net load",
+                  unregularised);
+    std::cout << "  a solution (KKT <= 1e-10): "
+              << yes_no(unregularised.kkt.max() <= 1e-10) << "\n";
+    // Pulled off its support (lambda_0 = -1 whatever u is) nothing holds
+    // it: every system is singular and PDAS says so.
+    Vector b_off(2);
+    b_off << 1, 0;
+    report_solver("pdas, unregularised, floating body pulled off",
+                  solve_with(make_problem(A, b_off, {0}, {0}), {"pdas"}, u, 0));
+    // With regularisation and the projection one of the family is found,
+    // and certified.
     const Report regularised =
       solve_with(make_problem(A, b, {0}, {0}), {"pdas"}, u, 1e-9);
     report_solver("pdas, regularised, floating body without net load",

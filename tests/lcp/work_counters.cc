@@ -227,8 +227,10 @@ main()
   }
 
   // 'auto' regularisation where the scene expected a definite A (an LCP
-  // read from files) but A is singular, as this chain's: PDAS meets a
-  // singular system, then regularises with 1e-9 and projects.
+  // read from files) but A is singular, as this chain's. The paper's PDAS
+  // (no safeguards) meets a singular system, then regularises with 1e-9 and
+  // projects. With its safeguards PDAS closes the constraints that the free
+  // motion moves (resolve_subset) and needs no regularisation.
   {
     // Two bodies of two nodes each, each held at its first node; the load
     // pulls that node off its support, so PDAS from u = 0 releases it and
@@ -241,15 +243,24 @@ main()
       }
     Vector load(4);
     load << 1, -2, 0, -1;
-    const Report pdas = solve_with(
-      make_problem(two_bodies, load, {0, 2}, {0, 0}), {"pdas"}, u);
     Vector exact(4);
     exact << 0, -2, 0, -1;
-    std::cout << "pdas, eps = auto, singular A: " << to_string(pdas.status)
-              << ", regularised after all: "
-              << yes_no(pdas.regularisation > 0 && pdas.projected)
-              << ", u exact: " << yes_no(relative_difference(u, exact) < 1e-12)
-              << "\n";
+    for (const unsigned int safeguard : {0u, 10u})
+      {
+        SolverParameters parameters;
+        parameters.pdas.safeguard = safeguard;
+        const Report report =
+          solve_with(make_problem(two_bodies, load, {0, 2}, {0, 0}),
+                     {"pdas"}, u, -1, parameters);
+        std::cout << "pdas" << (safeguard == 0 ? " without safeguards" : "")
+                  << ", eps = auto, singular A: " << to_string(report.status)
+                  << ", regularised after all: "
+                  << yes_no(report.regularisation > 0 && report.projected)
+                  << ", resolved exactly: "
+                  << yes_no(report.counters.resolved_subsets > 0)
+                  << ", u exact: "
+                  << yes_no(relative_difference(u, exact) < 1e-12) << "\n";
+      }
   }
 
   // Interior point: one analysis of the pattern for all its Newton systems.

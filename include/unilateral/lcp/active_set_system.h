@@ -83,6 +83,29 @@ namespace unilateral::lcp
     bool
     solve(const std::vector<char> &fixed, const DenseMatrix &R, DenseMatrix &X);
 
+    /**
+     * Make the own factor one of K(X) for exactly @p fixed (updated row by
+     * row within the budget, else factorised), so that many right-hand sides
+     * can follow without the conjugate gradients of a nearby factor (the
+     * Schur complement of a subset, one column per index). Returns false if
+     * A_FF is singular.
+     */
+    bool
+    prepare_factor(const std::vector<char> &fixed);
+
+    /**
+     * Directions in which K(X) is singular or nearly so (a body that the
+     * fixed set X leaves free to move): one step of inverse iteration with
+     * K(X) + delta I (delta = 1e-10 times the mean diagonal) on a random
+     * vector of the free indices, scaled to a largest entry of one. Its
+     * entries are of order one where a nearly free motion moves an index
+     * and of order delta elsewhere. Empty if even the shifted matrix cannot
+     * be factorised. The own factor is not kept (it is of the shifted
+     * matrix).
+     */
+    Vector
+    near_null_direction(const std::vector<char> &fixed);
+
     /// The most recent factor (own or inherited), for a follow-up system.
     std::shared_ptr<const ActiveSetFactor>
     factor() const;
@@ -105,8 +128,9 @@ namespace unilateral::lcp
     static constexpr double reduced_threshold = 1.0 / 6.0;
 
   private:
+    /// Factorise K(X), plus @p shift on the diagonal of the free part.
     bool
-    factorise(const std::vector<char> &fixed);
+    factorise(const std::vector<char> &fixed, double shift = 0);
 
     /// Update the own full-pattern factor to the fixed set @p fixed; false
     /// (and the own factor dropped) if that would exceed the budget, if

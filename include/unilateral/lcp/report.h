@@ -37,6 +37,11 @@ namespace unilateral::lcp
     unsigned int modified_factorisations = 0;
     /// Rows and columns added to or deleted from a factor in those updates.
     unsigned int factor_row_modifications = 0;
+    /// Sets of indices an active-set method could not settle, resolved
+    /// exactly through their Schur complement (resolve_subset), and their
+    /// total size.
+    unsigned int resolved_subsets        = 0;
+    unsigned int resolved_indices        = 0;
     unsigned int cg_iterations          = 0;
     unsigned int triangular_solves      = 0; ///< one per right-hand side
     unsigned int matrix_vector_products = 0;

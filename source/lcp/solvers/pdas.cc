@@ -6,15 +6,20 @@
  *   Step 3: stop if iter >= 1 and SZ did not change (then u_SZ = l_SZ,
  *           lambda_SP = 0, and the new sets certify feasibility)
  *   Step 4: solve A_FF u_F = b_F - A_F,SZ l_SZ with u_SZ = l_SZ.
- * Two safeguards the paper does not have (both can be switched off): the
- * test of Step 2 has a rounding tolerance, so degenerate indices (at the
- * bound with zero multiplier) do not flip sides forever, and when the number
- * of violated indices stops falling, Judice & Pires' single-pivot rule takes
- * over until it falls again, which makes the method terminate.
+ * Safeguards the paper does not have (each can be switched off): the test
+ * of Step 2 has a rounding tolerance, so degenerate indices (at the bound
+ * with zero multiplier) do not flip sides forever. When the number of
+ * violated indices stops falling, the indices that changed side meanwhile
+ * (the cycle) are resolved exactly at once, with the rest kept
+ * (resolve_subset); a step whose system is singular (a freed index left a
+ * body unsupported) is resolved the same way. Beyond max_resolved_subset
+ * indices, Judice & Pires' single-pivot rule takes over until the count
+ * falls again, which makes the method terminate on definite matrices.
  * The same routine is the projection step when run on A from u_eps.
  */
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/solver.h>
+#include <unilateral/lcp/subset_resolution.h>
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +37,10 @@ namespace unilateral::lcp
       /// Iterations without a new low in the count of violated indices
       /// after which PDAS (at its default iteration limit) stops as cycling.
       static constexpr unsigned int wandering_limit = 50;
+
+      /// Violated indices up to which they and their neighbours are
+      /// resolved exactly (the front of a slowly moving contact region).
+      static constexpr Index front_limit = 32;
 
       void
       solve(const Problem &problem,
@@ -88,7 +97,36 @@ namespace unilateral::lcp
         const unsigned int limit     = iteration_limit(500);
         const unsigned int safeguard = parameters.pdas.safeguard;
         Index              fewest_violations = problem.n_constrained() + 1;
-        unsigned int       without_progress  = 0;
+        // Iterations since the last new low of the violation count; the
+        // stall counter restarts after each exact resolution.
+        unsigned int       without_progress = 0, stalled = 0;
+        // The indices that changed side since the last new low: the cycle.
+        std::vector<char>  in_cycle(n, 0);
+        std::vector<Index> cycle;
+        const auto         add_to_cycle = [&](const std::vector<Index> &indices) {
+          for (const Index i : indices)
+            if (!in_cycle[i])
+              {
+                in_cycle[i] = 1;
+                cycle.push_back(i);
+              }
+        };
+        // Resolve U exactly (see resolve_subset); false if that failed.
+        std::size_t        resolved_size = 0;
+        std::vector<Index> last_resolved; // sorted
+        const auto         resolve = [&](std::vector<Index> subset) {
+          resolved_size = subset.size();
+          std::sort(subset.begin(), subset.end());
+          last_resolved = subset;
+          if (static_cast<Index>(subset.size()) > max_resolved_subset ||
+              resolve_subset(problem, system, subset, active,
+                             report.counters) != SubsetResolution::resolved)
+            return false;
+          ++report.counters.resolved_subsets;
+          report.counters.resolved_indices +=
+            static_cast<unsigned int>(subset.size());
+          return true;
+        };
         for (unsigned int iteration = 0;; ++iteration)
           {
             const Vector lambda = problem.A * u - problem.b;
@@ -122,8 +160,10 @@ namespace unilateral::lcp
                   ((diagonal > 0 ? 1.0 / diagonal : 0.0) + tau);
                 const double test =
                   (u[i] - problem.lower_bound[k]) - tau * lambda[i];
+                // An exact tie stays on its side (resolve_subset sends ties
+                // to the active side; flipping them back would undo it).
                 const bool now_active =
-                  active[i] ? test < tolerance : test < -tolerance;
+                  active[i] ? test <= tolerance : test < -tolerance;
                 if (now_active != static_cast<bool>(active[i]))
                   violated.push_back(i);
               }
@@ -132,12 +172,10 @@ namespace unilateral::lcp
                 report.status = Status::converged;
                 break;
               }
-            // Cycling: the count of violated indices has not reached a new
-            // low for long (running bond walls with a large settlement, from
-            // m = 30 on; nearly degenerate contacts, we guess). Murty's
-            // rule would end it, one index per factorisation; with the
-            // default limit PDAS stops instead and the driver continues
-            // from an interior point (solve_lcp).
+            // Wandering: the count of violated indices has not reached a
+            // new low for long, exact resolutions included (a cycle too
+            // large to resolve). With the default limit PDAS stops instead
+            // and the driver continues from an interior point (solve_lcp).
             if (parameters.max_iterations == 0 && safeguard > 0 &&
                 without_progress > wandering_limit)
               {
@@ -159,34 +197,115 @@ namespace unilateral::lcp
                 break;
               }
 
-            // Step 3, safeguarded (Judice & Pires): every violated index
-            // changes side while their number falls often enough; otherwise
-            // only the least one (Murty's rule, finite for definite A).
+            // No resolution when every violated index was just resolved:
+            // the test and the resolution then disagree by round-off, and
+            // a PDAS step ends it.
+            bool just_resolved = last_resolved.size() > 0;
+            for (const Index i : violated)
+              just_resolved = just_resolved && std::binary_search(
+                                                 last_resolved.begin(),
+                                                 last_resolved.end(), i);
+            last_resolved.clear();
+
+            // Step 3, safeguarded: every violated index changes side while
+            // their number reaches new lows often enough. After `safeguard`
+            // iterations without, the cycle is resolved exactly; if it is
+            // too large (or that fails), only the least violated index
+            // changes (Murty's rule, finite for definite A).
             const Index n_violated = static_cast<Index>(violated.size());
-            bool        single     = false;
+            bool        single = false, resolved = false;
             if (iteration >= 1 && safeguard > 0)
               {
                 if (n_violated < fewest_violations)
                   {
                     fewest_violations = n_violated;
-                    without_progress  = 0;
+                    without_progress = stalled = 0;
+                    for (const Index i : cycle)
+                      in_cycle[i] = 0;
+                    cycle.clear();
                   }
                 else
-                  single = ++without_progress > safeguard;
+                  ++without_progress;
+                add_to_cycle(violated);
+                if (without_progress > 0 && ++stalled > safeguard)
+                  {
+                    resolved = resolve(cycle);
+                    single   = !resolved;
+                    stalled  = 0;
+                  }
               }
-            if (single)
-              violated.resize(1); // the constrained indices are sorted
-            for (const Index i : violated)
-              active[i] = !active[i];
+            // The front: once few indices are violated, they and their
+            // constrained neighbours in the graph of A are resolved exactly
+            // instead of moving one layer per iteration.
+            if (!resolved && !single && !just_resolved && iteration >= 1 &&
+                safeguard > 0 && n_violated <= front_limit)
+              {
+                std::vector<char>  in_front(n, 0);
+                std::vector<Index> front;
+                const std::vector<char> constrained = problem.constrained_mask();
+                for (const Index i : violated)
+                  for (SparseMatrix::InnerIterator entry(problem.A, i); entry;
+                       ++entry)
+                    if (constrained[entry.row()] && !in_front[entry.row()])
+                      {
+                        in_front[entry.row()] = 1;
+                        front.push_back(entry.row());
+                      }
+                add_to_cycle(front);
+                resolved = resolve(front);
+              }
+            if (!resolved)
+              {
+                if (single)
+                  violated.resize(1); // the constrained indices are sorted
+                for (const Index i : violated)
+                  active[i] = !active[i];
+              }
 
-            Index n_active = 0;
-            for (Index k = 0; k < problem.n_constrained(); ++k)
-              if (active[problem.constrained[k]])
-                {
+            // Step 4. A singular system means that the active set leaves
+            // some body free to move: a freed index took its support, or
+            // (from an interior point or a regularised answer, where the
+            // solution is not unique) a contact closed without force that
+            // alone kept a brick from rotating lies slightly open. The open
+            // constrained indices that the free motions move are resolved
+            // exactly, with the rest kept (a few times, if that frees
+            // another body).
+            const auto solve_step = [&]() {
+              for (Index k = 0; k < problem.n_constrained(); ++k)
+                if (active[problem.constrained[k]])
                   u[problem.constrained[k]] = problem.lower_bound[k];
-                  ++n_active;
-                }
-            if (!system.solve(active, problem.b, u))
+              return system.solve(active, problem.b, u);
+            };
+            bool solved = solve_step();
+            for (unsigned int attempt = 0; !solved && safeguard > 0 && attempt < 3;
+                 ++attempt)
+              {
+                const Vector free_motion = system.near_null_direction(active);
+                std::vector<Index> subset;
+                for (Index k = 0; k < free_motion.size() &&
+                                  k < problem.n_constrained();
+                     ++k)
+                  {
+                    const Index i = problem.constrained[k];
+                    if (!active[i] && std::abs(free_motion[i]) > 1e-6)
+                      subset.push_back(i);
+                  }
+                add_to_cycle(subset);
+                if (progress != nullptr)
+                  *progress << "    pdas iteration " << iteration + 1
+                            << ": singular system; " << subset.size()
+                            << " open constraints move with the free motion"
+                            << (static_cast<Index>(subset.size()) >
+                                    max_resolved_subset ?
+                                  ", too many to resolve" :
+                                  ", resolving them exactly")
+                            << std::endl;
+                if (subset.empty() || !resolve(subset))
+                  break;
+                resolved = true;
+                solved   = solve_step();
+              }
+            if (!solved)
               {
                 report.status = Status::singular;
                 report.message =
@@ -196,14 +315,23 @@ namespace unilateral::lcp
                   " (some body is held by no active constraint)";
                 break;
               }
+            Index n_active = 0;
+            for (Index k = 0; k < problem.n_constrained(); ++k)
+              n_active += active[problem.constrained[k]];
             report.iterations = iteration + 1;
             solution.factor   = system.factor();
             if (progress != nullptr)
-              *progress << "    pdas iteration " << iteration + 1
-                        << ": active set " << n_active << ", changed "
-                        << violated.size()
-                        << (single ? " (safeguard: least index)" : "")
-                        << std::endl;
+              {
+                *progress << "    pdas iteration " << iteration + 1
+                          << ": active set " << n_active << ", ";
+                if (resolved)
+                  *progress << "resolved " << resolved_size
+                            << " indices exactly";
+                else
+                  *progress << "changed " << violated.size()
+                            << (single ? " (safeguard: least index)" : "");
+                *progress << std::endl;
+              }
           }
       }
     };

@@ -1,0 +1,87 @@
+#include <unilateral/lcp/solver.h>
+#include <unilateral/lcp/subset_resolution.h>
+
+#include <algorithm>
+
+namespace unilateral::lcp
+{
+  SubsetResolution
+  resolve_subset(const Problem            &problem,
+                 ActiveSetSystem          &system,
+                 const std::vector<Index> &subset,
+                 std::vector<char>        &active,
+                 Counters                 &counters)
+  {
+    const Index n = problem.size();
+    const Index k = static_cast<Index>(subset.size());
+    if (k == 0)
+      return SubsetResolution::resolved;
+
+    // The base: every index of U at its bound, the rest as they are. It
+    // holds at least what the current active set holds, so it is singular
+    // only if that is.
+    std::vector<char> fixed = active;
+    for (const Index i : subset)
+      fixed[i] = 1;
+    if (!system.prepare_factor(fixed))
+      return SubsetResolution::singular;
+
+    const Vector lower = problem.full_lower_bound();
+    Vector       base  = Vector::Zero(n);
+    for (Index i = 0; i < n; ++i)
+      if (fixed[i])
+        base[i] = lower[i];
+    if (!system.solve(fixed, problem.b, base))
+      return SubsetResolution::singular;
+    const Vector lambda_base = problem.A * base - problem.b;
+    ++counters.matrix_vector_products;
+
+    // M column by column: the response of the multipliers on U when one
+    // index of U moves off its bound by one. Blocks of columns keep the
+    // n x block work arrays small on a million unknowns.
+    constexpr Index block = 32;
+    DenseMatrix     M(k, k);
+    for (Index first = 0; first < k; first += block)
+      {
+        const Index columns = std::min(block, k - first);
+        DenseMatrix response = DenseMatrix::Zero(n, columns);
+        for (Index c = 0; c < columns; ++c)
+          response(subset[first + c], c) = 1.0;
+        if (!system.solve(fixed, DenseMatrix::Zero(n, columns), response))
+          return SubsetResolution::singular;
+        const DenseMatrix force = problem.A * response;
+        counters.matrix_vector_products += static_cast<unsigned int>(columns);
+        for (Index r = 0; r < k; ++r)
+          M.block(r, first, 1, columns) = force.row(subset[r]);
+      }
+
+    // The dense LCP in z = u_U - l_U: lambda_U = q + M z, as a Problem
+    // (A = M, b = -q, every index bounded below by 0).
+    Problem reduced;
+    reduced.A = DenseMatrix(0.5 * (M + M.transpose())).sparseView();
+    reduced.b.resize(k);
+    reduced.constrained.resize(k);
+    reduced.lower_bound = Vector::Zero(k);
+    for (Index r = 0; r < k; ++r)
+      {
+        reduced.b[r]           = -lambda_base[subset[r]];
+        reduced.constrained[r] = r;
+      }
+    check_and_normalise(reduced);
+
+    SolverParameters graves_parameters;
+    graves_parameters.method = "graves";
+    Solution reduced_solution;
+    Report   reduced_report;
+    SolverRegistry::get("graves")
+      .create(graves_parameters)
+      ->solve(reduced, reduced_solution, reduced_report, nullptr);
+    if (!reduced_report.converged())
+      return SubsetResolution::no_solution;
+
+    // Ties (z = 0 with w = 0) go to the active side, as in PDAS.
+    for (Index r = 0; r < k; ++r)
+      active[subset[r]] = !(reduced_solution.u[r] > 0);
+    return SubsetResolution::resolved;
+  }
+} // namespace unilateral::lcp
