@@ -146,8 +146,12 @@ namespace unilateral::lcp
       prm.declare_entry("Complementarity tolerance",
                         "0",
                         Double(0),
-                        "tol1 on |Sigma_S^T u_S| / n_c; 0 takes n_c * machine "
-                        "epsilon.");
+                        "tol1 on |Sigma_S^T u_S| / n_c; 0: the total "
+                        "|Sigma_S^T u_S| within n_c * machine epsilon (the "
+                        "paper's tol1 on the mean lets large walls stop too "
+                        "far from the answer for the projection), or the "
+                        "mean within the paper's n_c * machine epsilon once "
+                        "it stops falling (its rounding floor).");
       prm.declare_entry("Residual tolerance",
                         "0",
                         Double(0),

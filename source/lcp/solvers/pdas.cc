@@ -232,6 +232,24 @@ namespace unilateral::lcp
                     resolved = resolve(cycle);
                     single   = !resolved;
                     stalled  = 0;
+                    // Single pivots cannot end a cycle of thousands of
+                    // indices in reasonable time (running bond walls from
+                    // m = 30 on); with the default limit PDAS stops now
+                    // and the driver continues from an interior point.
+                    if (single && parameters.max_iterations == 0 &&
+                        static_cast<Index>(cycle.size()) > max_resolved_subset)
+                      {
+                        report.status  = Status::iteration_limit;
+                        report.message =
+                          "PDAS did not settle: " +
+                          std::to_string(cycle.size()) +
+                          " constraints changed side in the " +
+                          std::to_string(without_progress) +
+                          " iterations since the number of violated ones "
+                          "last fell (" + std::to_string(fewest_violations) +
+                          "), too many to resolve at once (cycling)";
+                        break;
+                      }
                   }
               }
             // The front: once few indices are violated, they and their

@@ -17,6 +17,13 @@
  *   Step 5: alpha_1, alpha_2 = largest steps in [0, 1] keeping s, lambda >= 0;
  *           if ds^T dlambda > 0 also alpha_3 = 0.99 (1 - sigma) s^T lambda /
  *           ds^T dlambda; alpha = min of them.
+ * Default tol1 (parameter 'Complementarity tolerance' = 0): the paper's
+ * n_c * machine epsilon bounds the mean product, so the total s^T lambda can
+ * reach n_c^2 epsilon (1e-5 on the m = 225 running bond wall), which leaves
+ * the iterate too far from the answer for the projection to finish it. We
+ * bound the total by n_c epsilon (mean <= epsilon); once the paper's bound
+ * is met, a mean that no longer falls tenfold in four iterations has reached
+ * its rounding floor and stops the method too.
  * Safeguard (parameter 'Step to boundary', default 0.9995): a step limited by
  * alpha_1 or alpha_2 < 1 is shortened by that factor, because landing exactly
  * on the boundary (the printed rule) makes the next Newton system singular,
@@ -28,6 +35,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <vector>
 #include <ostream>
 
 namespace unilateral::lcp
@@ -62,9 +70,11 @@ namespace unilateral::lcp
         for (Index k = 0; k < n_c; ++k)
           problem.lower_bound[k] /= scale[original.constrained[k]];
 
-        const double tol_gap = parameters.pdpc.tolerance_gap > 0 ?
-                                 parameters.pdpc.tolerance_gap :
-                                 std::max(n_c, 1) * epsilon;
+        const bool   default_gap = !(parameters.pdpc.tolerance_gap > 0);
+        const double tol_gap     = default_gap ? epsilon :
+                                                 parameters.pdpc.tolerance_gap;
+        const double paper_gap   = std::max(n_c, 1) * epsilon;
+        std::vector<double> recent_mu; // the mean products so far
         const double tol_residual =
           parameters.pdpc.tolerance_residual > 0 ?
             parameters.pdpc.tolerance_residual :
@@ -114,7 +124,13 @@ namespace unilateral::lcp
                         << std::scientific << std::setprecision(2)
                         << ": mu " << mu << ", residual " << residual
                         << std::defaultfloat << std::endl;
-            if (mu <= tol_gap && residual <= std::max(tol_residual, floor))
+            recent_mu.push_back(mu);
+            const std::size_t seen = recent_mu.size();
+            const bool        gap_at_floor =
+              default_gap && mu <= paper_gap && seen > 4 &&
+              mu > 0.1 * recent_mu[seen - 5];
+            if ((mu <= tol_gap || gap_at_floor) &&
+                residual <= std::max(tol_residual, floor))
               {
                 report.status = Status::converged;
                 break;
