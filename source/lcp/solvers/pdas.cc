@@ -38,10 +38,6 @@ namespace unilateral::lcp
       /// after which PDAS (at its default iteration limit) stops as cycling.
       static constexpr unsigned int wandering_limit = 50;
 
-      /// Violated indices up to which they and their neighbours are
-      /// resolved exactly (the front of a slowly moving contact region).
-      static constexpr Index front_limit = 32;
-
       void
       solve(const Problem &problem,
             Solution      &solution,
@@ -112,12 +108,10 @@ namespace unilateral::lcp
               }
         };
         // Resolve U exactly (see resolve_subset); false if that failed.
-        std::size_t        resolved_size = 0;
-        std::vector<Index> last_resolved; // sorted
-        const auto         resolve = [&](std::vector<Index> subset) {
+        std::size_t resolved_size = 0;
+        const auto  resolve       = [&](std::vector<Index> subset) {
           resolved_size = subset.size();
           std::sort(subset.begin(), subset.end());
-          last_resolved = subset;
           if (static_cast<Index>(subset.size()) > max_resolved_subset ||
               resolve_subset(problem, system, subset, active,
                              report.counters) != SubsetResolution::resolved)
@@ -197,16 +191,6 @@ namespace unilateral::lcp
                 break;
               }
 
-            // No resolution when every violated index was just resolved:
-            // the test and the resolution then disagree by round-off, and
-            // a PDAS step ends it.
-            bool just_resolved = last_resolved.size() > 0;
-            for (const Index i : violated)
-              just_resolved = just_resolved && std::binary_search(
-                                                 last_resolved.begin(),
-                                                 last_resolved.end(), i);
-            last_resolved.clear();
-
             // Step 3, safeguarded: every violated index changes side while
             // their number reaches new lows often enough. After `safeguard`
             // iterations without, the cycle is resolved exactly; if it is
@@ -252,26 +236,6 @@ namespace unilateral::lcp
                       }
                   }
               }
-            // The front: once few indices are violated, they and their
-            // constrained neighbours in the graph of A are resolved exactly
-            // instead of moving one layer per iteration.
-            if (!resolved && !single && !just_resolved && iteration >= 1 &&
-                safeguard > 0 && n_violated <= front_limit)
-              {
-                std::vector<char>  in_front(n, 0);
-                std::vector<Index> front;
-                const std::vector<char> constrained = problem.constrained_mask();
-                for (const Index i : violated)
-                  for (SparseMatrix::InnerIterator entry(problem.A, i); entry;
-                       ++entry)
-                    if (constrained[entry.row()] && !in_front[entry.row()])
-                      {
-                        in_front[entry.row()] = 1;
-                        front.push_back(entry.row());
-                      }
-                add_to_cycle(front);
-                resolved = resolve(front);
-              }
             if (!resolved)
               {
                 if (single)
@@ -300,14 +264,10 @@ namespace unilateral::lcp
               {
                 const Vector free_motion = system.near_null_direction(active);
                 std::vector<Index> subset;
-                for (Index k = 0; k < free_motion.size() &&
-                                  k < problem.n_constrained();
-                     ++k)
-                  {
-                    const Index i = problem.constrained[k];
+                if (free_motion.size() == n)
+                  for (const Index i : problem.constrained)
                     if (!active[i] && std::abs(free_motion[i]) > 1e-6)
                       subset.push_back(i);
-                  }
                 add_to_cycle(subset);
                 if (progress != nullptr)
                   *progress << "    pdas iteration " << iteration + 1

@@ -22,8 +22,9 @@
  * reach n_c^2 epsilon (1e-5 on the m = 225 running bond wall), which leaves
  * the iterate too far from the answer for the projection to finish it. We
  * bound the total by n_c epsilon (mean <= epsilon); once the paper's bound
- * is met, a mean that no longer falls tenfold in four iterations has reached
- * its rounding floor and stops the method too.
+ * is met, a mean that no longer halves in four iterations has reached its
+ * rounding floor and stops the method too (the mean falls about twofold in
+ * two iterations before that: every other step is a centring one).
  * Safeguard (parameter 'Step to boundary', default 0.9995): a step limited by
  * alpha_1 or alpha_2 < 1 is shortened by that factor, because landing exactly
  * on the boundary (the printed rule) makes the next Newton system singular,
@@ -128,7 +129,7 @@ namespace unilateral::lcp
             const std::size_t seen = recent_mu.size();
             const bool        gap_at_floor =
               default_gap && mu <= paper_gap && seen > 4 &&
-              mu > 0.1 * recent_mu[seen - 5];
+              mu > 0.5 * recent_mu[seen - 5];
             if ((mu <= tol_gap || gap_at_floor) &&
                 residual <= std::max(tol_residual, floor))
               {
