@@ -16,6 +16,23 @@ namespace
 {
   using namespace test;
 
+  // A = G G^T + 0.1 I (SPD with a spread of eigenvalues) and b, entries of
+  // G and b uniform in (-1, 1).
+  void
+  random_spd_lcp(const Index n, std::mt19937 &generator, DenseMatrix &A,
+                 Vector &b)
+  {
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    DenseMatrix                            G(n, n);
+    for (Index i = 0; i < n; ++i)
+      for (Index j = 0; j < n; ++j)
+        G(i, j) = uniform(generator);
+    A = G * G.transpose() + 0.1 * DenseMatrix::Identity(n, n);
+    b.resize(n);
+    for (Index i = 0; i < n; ++i)
+      b[i] = uniform(generator);
+  }
+
   // u for the fixed set X (u_X = l_X), by a dense solve.
   Vector
   equality_solution(const DenseMatrix       &A,
@@ -93,15 +110,9 @@ main()
   for (const Index n : sizes)
     for (unsigned int seed = 0; seed < 8; ++seed)
       {
-        // A = G G^T + 0.1 I: SPD with a spread of eigenvalues.
-        DenseMatrix G(n, n);
-        for (Index i = 0; i < n; ++i)
-          for (Index j = 0; j < n; ++j)
-            G(i, j) = uniform(generator);
-        const DenseMatrix A = G * G.transpose() + 0.1 * DenseMatrix::Identity(n, n);
-        Vector b(n);
-        for (Index i = 0; i < n; ++i)
-          b[i] = uniform(generator);
+        DenseMatrix A;
+        Vector      b;
+        random_spd_lcp(n, generator, A, b);
         // Seeds 0, 1 (mod 4) constrain everything; 2, 3 leave about a third
         // free; odd seeds have nonzero bounds.
         std::vector<Index>  S;
@@ -143,14 +154,9 @@ main()
   for (const Index n : sizes)
     for (unsigned int seed = 0; seed < 8; ++seed)
       {
-        DenseMatrix G(n, n);
-        for (Index i = 0; i < n; ++i)
-          for (Index j = 0; j < n; ++j)
-            G(i, j) = uniform(generator);
-        const DenseMatrix A = G * G.transpose() + 0.1 * DenseMatrix::Identity(n, n);
-        Vector b(n);
-        for (Index i = 0; i < n; ++i)
-          b[i] = uniform(generator);
+        DenseMatrix A;
+        Vector      b;
+        random_spd_lcp(n, generator, A, b);
         std::vector<Index>  S, subset;
         std::vector<double> lower;
         std::vector<char>   active(n, 0);
