@@ -99,7 +99,8 @@ namespace unilateral::lcp
               if (fixed[i] || fixed[j])
                 reduced.valuePtr()[k] = (i == j) ? fixed_diagonal[i] : 0.0;
               else
-                reduced.valuePtr()[k] = A.valuePtr()[k] + (i == j ? shift : 0.0);
+                reduced.valuePtr()[k] =
+                  A.valuePtr()[k] + (i == j ? shift : 0.0);
             }
         own_valid = own->cholesky.factorise(reduced, counters);
         return own_valid;

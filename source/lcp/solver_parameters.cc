@@ -151,7 +151,8 @@ namespace unilateral::lcp
                         "paper's tol1 on the mean lets large walls stop too "
                         "far from the answer for the projection), or the "
                         "mean within the paper's n_c * machine epsilon once "
-                        "it no longer halves in four iterations (its rounding floor).");
+                        "it no longer halves in four iterations (its "
+                        "rounding floor).");
       prm.declare_entry("Residual tolerance",
                         "0",
                         Double(0),

@@ -18,8 +18,8 @@ namespace unilateral::lcp
       return SubsetResolution::resolved;
 
     // The base: every index of U at its bound, the rest as they are. It
-    // holds at least what the current active set holds, so it is singular
-    // only if that is.
+    // holds at least what the current active set holds, and when that left
+    // a body free, U holds the open constraints its free motion moves.
     std::vector<char> fixed = active;
     for (const Index i : subset)
       fixed[i] = 1;

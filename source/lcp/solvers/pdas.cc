@@ -99,7 +99,7 @@ namespace unilateral::lcp
         // The indices that changed side since the last new low: the cycle.
         std::vector<char>  in_cycle(n, 0);
         std::vector<Index> cycle;
-        const auto         add_to_cycle = [&](const std::vector<Index> &indices) {
+        const auto add_to_cycle = [&](const std::vector<Index> &indices) {
           for (const Index i : indices)
             if (!in_cycle[i])
               {
@@ -259,7 +259,8 @@ namespace unilateral::lcp
               return system.solve(active, problem.b, u);
             };
             bool solved = solve_step();
-            for (unsigned int attempt = 0; !solved && safeguard > 0 && attempt < 3;
+            for (unsigned int attempt = 0;
+                 !solved && safeguard > 0 && attempt < 3;
                  ++attempt)
               {
                 const Vector free_motion = system.near_null_direction(active);
