@@ -122,14 +122,16 @@ namespace unilateral::lcp
         "Safeguard",
         "10",
         Integer(0),
-        "The finite-termination safeguard of Judice & Pires: after this many "
-        "iterations without fewer violated indices than the best so far, "
-        "change one index at a time (Murty's least-index rule) until there "
-        "are fewer. Plain PDAS can wander without settling when A is not an "
-        "M-matrix (running bond walls with a large gap). With the default "
-        "'Maximum iterations', PDAS that finds no fewer for 50 iterations "
-        "stops as cycling and the solve continues from PDPC's answer (noted "
-        "in the report). 0: the paper's PDAS without either.");
+        "After this many iterations without a new low in the number of "
+        "violated indices (above 1000 violated, a new low must be a tenth "
+        "lower), the indices that changed side meanwhile are resolved "
+        "exactly at once (Schur complement on them, Graves' method); a "
+        "singular step resolves the open constraints its free motion moves. "
+        "A cycle of more than 1000 indices ends PDAS as cycling at the "
+        "default 'Maximum iterations', and the solve continues from the "
+        "interior point's answer (noted in the report); with a limit set, "
+        "Judice & Pires' single pivots take over instead. 0: the paper's "
+        "PDAS without any of these.");
       prm.leave_subsection();
 
       prm.enter_subsection("PDPC");

@@ -37,22 +37,44 @@ namespace unilateral::lcp
     ++counters.matrix_vector_products;
 
     // M column by column: the response of the multipliers on U when one
-    // index of U moves off its bound by one. Blocks of columns keep the
-    // n x block work arrays small on a million unknowns.
+    // index j of U moves off its bound by one. K(X) x = e_j's load is
+    // -A_Fj on the free rows and D_jj at j; the multipliers on U are rows
+    // of A x, taken column by column of the symmetric A (no product with
+    // all of A). Blocks of columns keep the n x block work arrays small on
+    // a million unknowns, and the same two serve every block.
+    const std::shared_ptr<const ActiveSetFactor> factor = system.factor();
+    if (factor == nullptr || factor->fixed != fixed)
+      return SubsetResolution::singular; // not after prepare_factor(fixed)
+    const auto load_of = [&](const Index j, const Index c, DenseMatrix &load,
+                             const bool set) {
+      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+        if (!fixed[it.row()])
+          load(it.row(), c) = set ? -it.value() : 0.0;
+      load(j, c) = set ? factor->fixed_diagonal[j] : 0.0;
+    };
     constexpr Index block = 32;
     DenseMatrix     M(k, k);
+    DenseMatrix     load = DenseMatrix::Zero(n, std::min(block, k)), response;
     for (Index first = 0; first < k; first += block)
       {
         const Index columns = std::min(block, k - first);
-        DenseMatrix response = DenseMatrix::Zero(n, columns);
+        if (columns < load.cols())
+          load = DenseMatrix::Zero(n, columns);
         for (Index c = 0; c < columns; ++c)
-          response(subset[first + c], c) = 1.0;
-        if (!system.solve(fixed, DenseMatrix::Zero(n, columns), response))
-          return SubsetResolution::singular;
-        const DenseMatrix force = problem.A * response;
-        counters.matrix_vector_products += static_cast<unsigned int>(columns);
+          load_of(subset[first + c], c, load, true);
+        factor->solve(load, response);
+        counters.triangular_solves += static_cast<unsigned int>(columns);
+        for (Index c = 0; c < columns; ++c)
+          load_of(subset[first + c], c, load, false);
         for (Index r = 0; r < k; ++r)
-          M.block(r, first, 1, columns) = force.row(subset[r]);
+          {
+            auto row = M.block(r, first, 1, columns);
+            row.setZero();
+            for (SparseMatrix::InnerIterator it(problem.A, subset[r]); it;
+                 ++it)
+              row += it.value() * response.row(it.row());
+          }
+        counters.matrix_vector_products += static_cast<unsigned int>(columns);
       }
 
     // The dense LCP in z = u_U - l_U: lambda_U = q + M z, as a Problem

@@ -32,9 +32,9 @@
 //
 // 5. PDAS cycles on running bond walls from m = 30 on (g = H/2: bricks over
 //    the settled base rest on a corner in neutral equilibrium): it reached
-//    its 500-iteration limit. It now stops after 50 iterations without a
-//    new low in violated constraints and continues from PDPC's answer.
-//    Checked at m = 30 against PDPC alone.
+//    its 500-iteration limit. It now resolves small cycles exactly, stops
+//    as cycling when a cycle is too large to resolve and continues from the
+//    interior point's answer. Checked at m = 30 against PDPC alone.
 #include <unilateral/lcp/problem.h>
 #include <unilateral/lcp/report.h>
 #include <unilateral/scenes/scene.h>
