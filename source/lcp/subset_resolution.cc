@@ -74,7 +74,6 @@ namespace unilateral::lcp
                  ++it)
               row += it.value() * response.row(it.row());
           }
-        counters.matrix_vector_products += static_cast<unsigned int>(columns);
       }
 
     // The dense LCP in z = u_U - l_U: lambda_U = q + M z, as a Problem
