@@ -77,6 +77,37 @@ namespace test
     return report;
   }
 
+  /// u for the fixed set X (u_X = l_X, lower given on every index), by a
+  /// dense solve of A_FF u_F = b_F - A_FX l_X.
+  inline Vector
+  equality_solution(const DenseMatrix       &A,
+                    const Vector            &b,
+                    const std::vector<char> &fixed,
+                    const Vector            &lower)
+  {
+    const Index        n = A.rows();
+    std::vector<Index> free;
+    Vector             u = Vector::Zero(n);
+    for (Index i = 0; i < n; ++i)
+      if (fixed[i])
+        u[i] = lower[i];
+      else
+        free.push_back(i);
+    const Index m = static_cast<Index>(free.size());
+    DenseMatrix A_FF(m, m);
+    Vector      r(m);
+    for (Index a = 0; a < m; ++a)
+      {
+        r[a] = b[free[a]] - A.row(free[a]).dot(u);
+        for (Index c = 0; c < m; ++c)
+          A_FF(a, c) = A(free[a], free[c]);
+      }
+    const Vector u_F = A_FF.ldlt().solve(r);
+    for (Index a = 0; a < m; ++a)
+      u[free[a]] = u_F[a];
+    return u;
+  }
+
   /**
    * The exact solution by enumeration: for every subset X of S (the active
    * set) solve the equality-constrained system with u_X = l_X, and keep the
@@ -93,36 +124,16 @@ namespace test
   {
     const Index n     = A.rows();
     const Index n_c   = static_cast<Index>(S.size());
-    int         found = 0;
+    Vector      full_lower = Vector::Zero(n);
+    for (Index k = 0; k < n_c; ++k)
+      full_lower[S[k]] = lower[k];
+    int found = 0;
     for (long mask = 0; mask < (1L << n_c); ++mask)
       {
         std::vector<char> fixed(n, 0);
-        Vector            u = Vector::Zero(n);
         for (Index k = 0; k < n_c; ++k)
-          if (mask & (1L << k))
-            {
-              fixed[S[k]] = 1;
-              u[S[k]]     = lower[k];
-            }
-        std::vector<Index> free;
-        for (Index i = 0; i < n; ++i)
-          if (!fixed[i])
-            free.push_back(i);
-        const Index m = static_cast<Index>(free.size());
-        DenseMatrix A_FF(m, m);
-        Vector      r(m);
-        for (Index a = 0; a < m; ++a)
-          {
-            r[a] = b[free[a]];
-            for (Index j = 0; j < n; ++j)
-              if (fixed[j])
-                r[a] -= A(free[a], j) * u[j];
-            for (Index c = 0; c < m; ++c)
-              A_FF(a, c) = A(free[a], free[c]);
-          }
-        const Vector u_F = A_FF.ldlt().solve(r);
-        for (Index a = 0; a < m; ++a)
-          u[free[a]] = u_F[a];
+          fixed[S[k]] = (mask >> k) & 1;
+        const Vector u      = equality_solution(A, b, fixed, full_lower);
         const Vector lambda = A * u - b;
         bool         feasible = true;
         for (Index k = 0; k < n_c; ++k)

@@ -1179,9 +1179,7 @@ def install_python_packages():
         except ImportError:
             missing.append(package)
     if missing:
-        root = os.path.dirname(os.path.dirname(os.path.dirname(
-            os.path.abspath(__file__))))
-        subprocess.run([os.path.join(root, "install.sh")] + missing,
+        subprocess.run([os.path.join(ROOT, "install.sh")] + missing,
                        check=True)
         os.execv(sys.executable, [sys.executable] + sys.argv)
 

@@ -33,36 +33,6 @@ namespace
       b[i] = uniform(generator);
   }
 
-  // u for the fixed set X (u_X = l_X), by a dense solve.
-  Vector
-  equality_solution(const DenseMatrix       &A,
-                    const Vector            &b,
-                    const std::vector<char> &fixed,
-                    const Vector            &lower)
-  {
-    const Index        n = A.rows();
-    std::vector<Index> free;
-    Vector             u = Vector::Zero(n);
-    for (Index i = 0; i < n; ++i)
-      if (fixed[i])
-        u[i] = lower[i];
-      else
-        free.push_back(i);
-    const Index m = static_cast<Index>(free.size());
-    DenseMatrix A_FF(m, m);
-    Vector      r(m);
-    for (Index a = 0; a < m; ++a)
-      {
-        r[a] = b[free[a]] - A.row(free[a]).dot(u);
-        for (Index c = 0; c < m; ++c)
-          A_FF(a, c) = A(free[a], free[c]);
-      }
-    const Vector u_F = A_FF.ldlt().solve(r);
-    for (Index a = 0; a < m; ++a)
-      u[free[a]] = u_F[a];
-    return u;
-  }
-
   /**
    * The answer on U by enumeration: every subset X' of U fixed with the
    * rest as given; the one whose u is feasible on U (u >= l off X',

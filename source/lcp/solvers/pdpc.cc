@@ -36,8 +36,8 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
-#include <vector>
 #include <ostream>
+#include <vector>
 
 namespace unilateral::lcp
 {
