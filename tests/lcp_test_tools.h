@@ -21,10 +21,12 @@ namespace test
   struct Method
   {
     std::string name;
-    bool        schur_complement = false;
+    bool        schur_complement    = false;
+    bool        predictor_corrector = false; ///< interior_point's variant
     std::string label() const
     {
-      return name + (schur_complement ? "_sc" : "");
+      return name + (schur_complement ? "_sc" : "") +
+             (predictor_corrector ? "_pc" : "");
     }
   };
 
@@ -38,6 +40,7 @@ namespace test
                                    {"pdas"},
                                    {"pdpc"},
                                    {"interior_point"},
+                                   {"interior_point", false, true},
                                    {"block_pivoting"},
                                    {"graves", has_unconstrained},
                                    {"lssnn", true},
@@ -71,6 +74,7 @@ namespace test
     parameters.method           = method.name;
     parameters.schur_complement = method.schur_complement;
     parameters.regularisation   = regularisation;
+    parameters.interior_point.predictor_corrector = method.predictor_corrector;
     Solution solution;
     const Report report = solve_lcp(problem, parameters, solution, nullptr, 0);
     u                   = solution.u;

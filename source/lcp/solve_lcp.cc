@@ -169,8 +169,10 @@ namespace unilateral::lcp
         *progress << "    " << pdas_report.message
                   << "; continuing from the interior point"
                   << std::endl;
+      SolverParameters interior_parameters = parameters;
+      interior_parameters.interior_point.predictor_corrector = true;
       Report report = solve_full_with(
-        "interior_point", problem, parameters, solution, progress,
+        "interior_point", problem, interior_parameters, solution, progress,
         auto_regularisation);
       report.solver = pdas_report.solver;
       report.iterations += pdas_report.iterations;

@@ -58,7 +58,7 @@ namespace unilateral::lcp
         "(psor: 100000 sweeps, lssnn: 3|S| + 100, pdas/pdpc/interior_point: "
         "500, block_pivoting: 10|S| + 100, graves: 10|S| + 100). Reaching it "
         "is reported as status 'iteration limit', never as a solution; at 0, "
-        "PDAS that cycles continues from PDPC (see PDAS/Safeguard).");
+        "PDAS that cycles continues from the interior point (see PDAS/Safeguard).");
       prm.declare_entry(
         "Maximum dense size",
         "6000",
@@ -194,6 +194,17 @@ namespace unilateral::lcp
                         "1e-8",
                         Double(0),
                         "epsilon_2 on (z - psi)^T w (eq. 56).");
+      prm.declare_entry(
+        "Variant",
+        "basic",
+        dealii::Patterns::Selection("basic|predictor-corrector"),
+        "basic: the method of Fernandes et al. (one Newton step per "
+        "iteration, centring delta). predictor-corrector: Mehrotra's, which "
+        "chooses the centring from an affine step and corrects its second "
+        "order term: two solves with one factorisation per iteration, and "
+        "far fewer iterations where the solution is degenerate (running bond "
+        "walls, where the basic method converges only linearly). The "
+        "hand-over from cycling PDAS always uses predictor-corrector.");
       prm.leave_subsection();
 
       prm.enter_subsection("Block pivoting");
@@ -292,6 +303,8 @@ namespace unilateral::lcp
         prm.get_double("Residual tolerance");
       interior_point.complementarity_tolerance =
         prm.get_double("Complementarity tolerance");
+      interior_point.predictor_corrector =
+        prm.get("Variant") == "predictor-corrector";
       check_parameter(interior_point.centering > 0 &&
                         interior_point.centering < 1,
                       "Solver/Interior point", "Centering",

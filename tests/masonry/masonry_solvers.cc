@@ -31,12 +31,14 @@ namespace
   {
     std::string name;
     bool        schur_complement;
+    bool        predictor_corrector = false; ///< interior_point's variant
   };
 
   std::string
   label(const Method &method)
   {
-    return method.name + (method.schur_complement ? " (Schur)" : "");
+    return method.name + (method.schur_complement ? " (Schur)" : "") +
+           (method.predictor_corrector ? " (predictor-corrector)" : "");
   }
 
   // Why a run is left out, or "" if it runs.
@@ -67,7 +69,12 @@ namespace
       "\n  set Blocks per side = " + std::to_string(m) +
       "\nend\nsubsection Solver\n  set Method = " + method.name +
       "\n  set Schur complement = " +
-      (method.schur_complement ? "true" : "false") + "\nend\n";
+      (method.schur_complement ? "true" : "false") +
+      (method.predictor_corrector ?
+         "\n  subsection Interior point\n    set Variant = "
+         "predictor-corrector\n  end" :
+         "") +
+      "\nend\n";
     Setup setup = parse(prm);
     // Stack bond: the projection step cycles on degenerate contacts until
     // its iteration limit (see above); 100 instead of 500 iterations save
@@ -87,6 +94,7 @@ main()
                                        {"lssnn", false},
                                        {"pdpc", false},
                                        {"interior_point", false},
+                                       {"interior_point", false, true},
                                        {"block_pivoting", false},
                                        {"graves", true},
                                        {"lssnn", true},

@@ -81,6 +81,9 @@ namespace unilateral::lcp
       double step_factor             = 0.99995; ///< beta in (50)
       double residual_tolerance      = 1e-10;   ///< epsilon_1 in (55)
       double complementarity_tolerance = 1e-8;  ///< epsilon_2 in (56)
+      /// Mehrotra's predictor-corrector instead of the paper's fixed
+      /// centring (the hand-over from cycling PDAS always uses it).
+      bool   predictor_corrector = false;
     } interior_point;
 
     struct

@@ -24,6 +24,13 @@
  * falling for three steps with the gap met (the floor is higher on larger
  * meshes); the final KKT check of the driver still judges the answer. A
  * non-finite iterate ends the run as a breakdown instead of iterating on.
+ *
+ * Variant predictor-corrector (Mehrotra, as in Wright, "Primal-Dual
+ * Interior-Point Methods", ch. 10, for the LCP): per iteration, one
+ * factorisation of the matrix of (47) and two solves, an affine step
+ * (delta = 0) that sets delta = (gap after it / gap)^3, and a corrected
+ * step with the affine step's second-order term. One step length for z and
+ * w, as (50) (the LCP couples them).
  */
 #include <unilateral/lcp/shifted_system.h>
 #include <unilateral/lcp/solver.h>
@@ -130,16 +137,11 @@ namespace unilateral::lcp
               }
             report.iterations = k + 1;
 
-            // (42) and (47).
-            const double mu =
-              n_c > 0 ? options.centering * complementarity / n_c : 0.0;
-            rhs = r;
+            // (47): K du = r + E t / (z - psi), dw = (t - w du_J1) / (z - psi)
+            // with K = C + diag_J1(w / (z - psi)), for a target t of the
+            // complementarity rows: mu_k - (z - psi) w in the paper's method.
             for (Index j = 0; j < n_c; ++j)
-              {
-                const Index i = problem.constrained[j];
-                shift[i]      = w[j] / gap[j];
-                rhs[i] += mu / gap[j] - w[j];
-              }
+              shift[problem.constrained[j]] = w[j] / gap[j];
             if (!newton.factorise(shift))
               {
                 report.status  = Status::singular;
@@ -149,20 +151,61 @@ namespace unilateral::lcp
                                  " (C_JfJf singular?)";
                 break;
               }
-            newton.solve(rhs, du);
-
-            // (51) and (50).
-            double alpha_max = std::numeric_limits<double>::infinity();
-            for (Index j = 0; j < n_c; ++j)
+            const auto direction = [&](const Vector &target) {
+              rhs = r;
+              for (Index j = 0; j < n_c; ++j)
+                rhs[problem.constrained[j]] += target[j] / gap[j];
+              newton.solve(rhs, du);
+              for (Index j = 0; j < n_c; ++j)
+                dw[j] =
+                  (target[j] - w[j] * du[problem.constrained[j]]) / gap[j];
+            };
+            // (51): the largest step keeping z - psi >= 0 and w >= 0.
+            const auto largest_step = [&]() {
+              double alpha_max = std::numeric_limits<double>::infinity();
+              for (Index j = 0; j < n_c; ++j)
+                {
+                  const double dz = du[problem.constrained[j]];
+                  if (dz < 0)
+                    alpha_max = std::min(alpha_max, gap[j] / -dz);
+                  if (dw[j] < 0)
+                    alpha_max = std::min(alpha_max, w[j] / -dw[j]);
+                }
+              return alpha_max;
+            };
+            const double mean_complementarity =
+              n_c > 0 ? complementarity / n_c : 0.0;
+            Vector target(n_c);
+            if (!options.predictor_corrector)
+              // (42): mu_k = delta (z - psi)^T w / |J1|.
+              for (Index j = 0; j < n_c; ++j)
+                target[j] = options.centering * mean_complementarity -
+                            gap[j] * w[j];
+            else
               {
-                const double dz = du[problem.constrained[j]];
-                dw[j] = mu / gap[j] - w[j] * (1 + dz / gap[j]);
-                if (dz < 0)
-                  alpha_max = std::min(alpha_max, gap[j] / -dz);
-                if (dw[j] < 0)
-                  alpha_max = std::min(alpha_max, w[j] / -dw[j]);
+                // Mehrotra: the affine step (target -(z - psi) w) measures
+                // how far the gap can fall; the centring is the cube of
+                // that fraction, and the corrector adds the second-order
+                // term ds dw the affine step ignores.
+                for (Index j = 0; j < n_c; ++j)
+                  target[j] = -gap[j] * w[j];
+                direction(target);
+                const double alpha_affine = std::min(1.0, largest_step());
+                double       affine_complementarity = 0;
+                for (Index j = 0; j < n_c; ++j)
+                  affine_complementarity +=
+                    (gap[j] + alpha_affine * du[problem.constrained[j]]) *
+                    (w[j] + alpha_affine * dw[j]);
+                const double sigma = std::min(
+                  1.0, std::pow(affine_complementarity / complementarity, 3));
+                for (Index j = 0; j < n_c; ++j)
+                  target[j] = sigma * mean_complementarity - gap[j] * w[j] -
+                              du[problem.constrained[j]] * dw[j];
               }
-            const double alpha = std::min(1.0, options.step_factor * alpha_max);
+            direction(target);
+            // (50).
+            const double alpha =
+              std::min(1.0, options.step_factor * largest_step());
 
             // (54).
             z += alpha * du;
