@@ -1,6 +1,7 @@
 #include <unilateral/lcp/sparse_cholesky.h>
 
 #include <cholmod.h>
+#include <omp.h>
 
 #include <stdexcept>
 
@@ -29,6 +30,15 @@ namespace unilateral::lcp
 
     Implementation()
     {
+      // CHOLMOD 3 (SuiteSparse 5.12) runs small loops of every supernode
+      // (clearing a map, copying a few columns) as OpenMP regions of a
+      // compile-time 4 threads, whatever OMP_NUM_THREADS says: on 2 cores
+      // that is millions of thread wake-ups per run (running bond m = 120:
+      // 9.7 million futex calls, a third of the run in the kernel; 42 s ->
+      // 31 s without them). Those regions run serially from here on; the
+      // dense kernels keep BLAS's own threads. Process-wide: nothing else
+      // here uses OpenMP (deal.II runs on TBB).
+      omp_set_max_active_levels(0);
       cholmod_start(&common);
       // Errors become return codes we check, never prints to stderr.
       common.print          = 0;
