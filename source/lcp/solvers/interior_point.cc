@@ -137,9 +137,11 @@ namespace unilateral::lcp
               }
             report.iterations = k + 1;
 
-            // (47): K du = r + E t / (z - psi), dw = (t - w du_J1) / (z - psi)
-            // with K = C + diag_J1(w / (z - psi)), for a target t of the
-            // complementarity rows: mu_k - (z - psi) w in the paper's method.
+            // (47): K du = r + E (c / (z - psi) - w),
+            //       dw = c / (z - psi) - w (1 + du_J1 / (z - psi)),
+            // with K = C + diag_J1(w / (z - psi)), for the centring term c of
+            // the complementarity rows (z - psi) w = c: mu_k in the paper's
+            // method.
             for (Index j = 0; j < n_c; ++j)
               shift[problem.constrained[j]] = w[j] / gap[j];
             if (!newton.factorise(shift))
@@ -151,14 +153,14 @@ namespace unilateral::lcp
                                  " (C_JfJf singular?)";
                 break;
               }
-            const auto direction = [&](const Vector &target) {
+            const auto direction = [&](const Vector &centring) {
               rhs = r;
               for (Index j = 0; j < n_c; ++j)
-                rhs[problem.constrained[j]] += target[j] / gap[j];
+                rhs[problem.constrained[j]] += centring[j] / gap[j] - w[j];
               newton.solve(rhs, du);
               for (Index j = 0; j < n_c; ++j)
-                dw[j] =
-                  (target[j] - w[j] * du[problem.constrained[j]]) / gap[j];
+                dw[j] = centring[j] / gap[j] -
+                        w[j] * (1 + du[problem.constrained[j]] / gap[j]);
             };
             // (51): the largest step keeping z - psi >= 0 and w >= 0.
             const auto largest_step = [&]() {
@@ -175,21 +177,19 @@ namespace unilateral::lcp
             };
             const double mean_complementarity =
               n_c > 0 ? complementarity / n_c : 0.0;
-            Vector target(n_c);
+            Vector centring(n_c);
             if (!options.predictor_corrector)
               // (42): mu_k = delta (z - psi)^T w / |J1|.
-              for (Index j = 0; j < n_c; ++j)
-                target[j] = options.centering * mean_complementarity -
-                            gap[j] * w[j];
+              centring.setConstant(
+                n_c > 0 ? options.centering * complementarity / n_c : 0.0);
             else
               {
-                // Mehrotra: the affine step (target -(z - psi) w) measures
-                // how far the gap can fall; the centring is the cube of
-                // that fraction, and the corrector adds the second-order
-                // term ds dw the affine step ignores.
-                for (Index j = 0; j < n_c; ++j)
-                  target[j] = -gap[j] * w[j];
-                direction(target);
+                // Mehrotra: the affine step (c = 0) measures how far the
+                // gap can fall; the centring is the cube of that fraction,
+                // and the corrector subtracts the second-order term ds dw
+                // the affine step ignores.
+                centring.setZero();
+                direction(centring);
                 const double alpha_affine = std::min(1.0, largest_step());
                 double       affine_complementarity = 0;
                 for (Index j = 0; j < n_c; ++j)
@@ -199,10 +199,10 @@ namespace unilateral::lcp
                 const double sigma = std::min(
                   1.0, std::pow(affine_complementarity / complementarity, 3));
                 for (Index j = 0; j < n_c; ++j)
-                  target[j] = sigma * mean_complementarity - gap[j] * w[j] -
-                              du[problem.constrained[j]] * dw[j];
+                  centring[j] = sigma * mean_complementarity -
+                                du[problem.constrained[j]] * dw[j];
               }
-            direction(target);
+            direction(centring);
             // (50).
             const double alpha =
               std::min(1.0, options.step_factor * largest_step());
