@@ -193,5 +193,7 @@ namespace unilateral::masonry
     double                        max_displacement  = 0;
     double                        unit              = 1;
     unsigned int                  n_closed_contacts = 0;
+    /// Closed without force (see recover_physical_solution).
+    unsigned int                  n_degenerate_contacts = 0;
   };
 } // namespace unilateral::masonry
