@@ -175,8 +175,6 @@ namespace unilateral::lcp
                 }
               return alpha_max;
             };
-            const double mean_complementarity =
-              n_c > 0 ? complementarity / n_c : 0.0;
             Vector centring(n_c);
             if (!options.predictor_corrector)
               // (42): mu_k = delta (z - psi)^T w / |J1|.
@@ -198,6 +196,7 @@ namespace unilateral::lcp
                     (w[j] + alpha_affine * dw[j]);
                 const double sigma = std::min(
                   1.0, std::pow(affine_complementarity / complementarity, 3));
+                const double mean_complementarity = complementarity / n_c;
                 for (Index j = 0; j < n_c; ++j)
                   centring[j] = sigma * mean_complementarity -
                                 du[problem.constrained[j]] * dw[j];

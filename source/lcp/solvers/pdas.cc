@@ -204,21 +204,21 @@ namespace unilateral::lcp
             fewest_so_far.push_back(
               fewest_so_far.empty() ? n_violated :
                                       std::min(fewest_so_far.back(), n_violated));
+            const Index fewest_before =
+              fewest_so_far.size() > halving_window ?
+                fewest_so_far[fewest_so_far.size() - 1 - halving_window] :
+                0;
             if (parameters.max_iterations == 0 && safeguard > 0 &&
                 fewest_so_far.size() > halving_window &&
                 fewest_so_far.back() > max_resolved_subset &&
-                fewest_so_far.back() >
-                  0.5 * static_cast<double>(
-                          fewest_so_far[fewest_so_far.size() - 1 -
-                                        halving_window]))
+                fewest_so_far.back() > 0.5 * static_cast<double>(fewest_before))
               {
                 report.status  = Status::iteration_limit;
                 report.message =
                   "PDAS did not settle: the fewest violated constraints "
                   "fell only from " +
-                  std::to_string(fewest_so_far[fewest_so_far.size() - 1 -
-                                               halving_window]) +
-                  " to " + std::to_string(fewest_so_far.back()) + " in " +
+                  std::to_string(fewest_before) + " to " +
+                  std::to_string(fewest_so_far.back()) + " in " +
                   std::to_string(halving_window) +
                   " iterations, too many to resolve at once (cycling)";
                 break;
