@@ -27,6 +27,21 @@ namespace unilateral::lcp
     Index           pattern_size = -1;
     Index           pattern_nonzeros = -1;
     std::uint64_t   pattern_hash = 0;
+    bool            pattern_relaxed = false;
+
+    /// CHOLMOD's supernode amalgamation for the next analysis (see
+    /// SparseCholesky::relaxed_supernodes).
+    void
+    set_amalgamation(const bool relaxed)
+    {
+      const std::size_t nrelax[2][3] = {{4, 16, 48}, {16, 64, 128}};
+      const double      zrelax[2][3] = {{0.8, 0.1, 0.05}, {0.9, 0.3, 0.1}};
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          common.nrelax[i] = nrelax[relaxed][i];
+          common.zrelax[i] = zrelax[relaxed][i];
+        }
+    }
 
     Implementation()
     {
@@ -149,10 +164,12 @@ namespace unilateral::lcp
 
     const std::uint64_t hash = Implementation::hash_pattern(A);
     if (impl.factor == nullptr || impl.pattern_size != A.rows() ||
-        impl.pattern_nonzeros != A.nonZeros() || impl.pattern_hash != hash)
+        impl.pattern_nonzeros != A.nonZeros() || impl.pattern_hash != hash ||
+        impl.pattern_relaxed != relaxed_supernodes)
       {
         if (impl.factor != nullptr)
           cholmod_free_factor(&impl.factor, &impl.common);
+        impl.set_amalgamation(relaxed_supernodes);
         if (ordering.empty())
           {
             impl.common.nmethods           = 1;
@@ -174,6 +191,7 @@ namespace unilateral::lcp
         impl.pattern_size     = A.rows();
         impl.pattern_nonzeros = A.nonZeros();
         impl.pattern_hash     = hash;
+        impl.pattern_relaxed  = relaxed_supernodes;
         impl.analysis_flops   = impl.common.fl;
         impl.inverse_ordering.clear(); // both computed on first need
         impl.path_entries.clear();
