@@ -210,9 +210,14 @@ namespace unilateral::lcp
     };
     std::vector<char> current = own->fixed;
     bool              ok      = true;
+    std::vector<Index> column_rows;
     for (const Index k : newly_fixed)
       {
-        ok = own->cholesky.delete_row(k, fixed_diagonal[k]) && !over_budget();
+        column_rows.clear();
+        for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+          column_rows.push_back(it.row());
+        ok = own->cholesky.delete_row(k, fixed_diagonal[k], column_rows) &&
+             !over_budget();
         if (!ok)
           break;
         current[k] = 1;

@@ -3,6 +3,7 @@
 #include <cholmod.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace unilateral::lcp
@@ -21,6 +22,9 @@ namespace unilateral::lcp
     // in the columns of all its ancestors in the elimination tree (the
     // columns a row modification at that position rewrites).
     std::vector<double> path_entries;
+    // Marks for row_pattern (all zero between calls) and its result.
+    std::vector<char>   row_mark;
+    std::vector<Index>  row_pattern_positions;
     double          analysis_flops     = 0;
     double          modification_flops = 0;
     // Fingerprint of the analysed pattern (size, nonzeros, hash).
@@ -118,6 +122,9 @@ namespace unilateral::lcp
 
     void
     compute_path_entries();
+
+    bool
+    row_pattern(Index position, const std::vector<Index> &column_rows);
 
     static std::uint64_t
     hash_pattern(const SparseMatrix &A)
@@ -303,14 +310,76 @@ namespace unilateral::lcp
     return total;
   }
 
+  /**
+   * The pattern of row @p position of the modified factor, from the
+   * pattern of the matrix's column there: row k of L is the set of columns
+   * on the paths from each j < k with a_jk != 0 up to k in the tree of L
+   * (parent of j: the first row below the diagonal of column j; columns are
+   * kept sorted). Entries L_kj stored outside those paths (supernodal
+   * amalgamation, fill of another active set) are exact zeros: every term
+   * that could make them nonzero has a structural zero as a factor. False
+   * if a path does not lead to k (then CHOLMOD searches itself).
+   */
   bool
-  SparseCholesky::delete_row(const Index k, const double diagonal)
+  SparseCholesky::Implementation::row_pattern(
+    const Index               position,
+    const std::vector<Index> &column_rows)
+  {
+    const auto *Lp  = static_cast<const Index *>(modified->p);
+    const auto *Li  = static_cast<const Index *>(modified->i);
+    const auto *Lnz = static_cast<const Index *>(modified->nz);
+    row_mark.resize(modified->n, 0);
+    row_pattern_positions.clear();
+    bool complete = true;
+    for (const Index row : column_rows)
+      {
+        Index j = position_of(row);
+        if (j >= position) // the diagonal, or a row of column k of L
+          continue;
+        while (j >= 0 && j < position && !row_mark[j])
+          {
+            row_mark[j] = 1;
+            row_pattern_positions.push_back(j);
+            j = Lnz[j] > 1 ? Li[Lp[j] + 1] : -1;
+          }
+        // A path ends at k or at a column already on the pattern.
+        complete = complete && j >= 0 && (j == position || row_mark[j]);
+      }
+    for (const Index j : row_pattern_positions)
+      row_mark[j] = 0;
+    return complete;
+  }
+
+  bool
+  SparseCholesky::delete_row(const Index               k,
+                             const double              diagonal,
+                             const std::vector<Index> &column_rows)
   {
     auto &impl = *implementation;
     if (!prepare_modification())
       return false;
     const Index position = impl.position_of(k);
-    if (!cholmod_rowdel(position, nullptr, impl.modified, &impl.common))
+    // Row k of L as an n x 1 pattern.
+    cholmod_sparse row{};
+    std::vector<Index> row_start = {0, 0};
+    cholmod_sparse    *row_given = nullptr;
+    if (impl.row_pattern(position, column_rows))
+      {
+        row_start[1] = static_cast<Index>(impl.row_pattern_positions.size());
+        row.nrow     = impl.modified->n;
+        row.ncol     = 1;
+        row.nzmax    = std::max<std::size_t>(1, row_start[1]);
+        row.p        = row_start.data();
+        row.i        = impl.row_pattern_positions.data();
+        row.stype    = 0;
+        row.itype    = CHOLMOD_INT;
+        row.xtype    = CHOLMOD_PATTERN;
+        row.dtype    = CHOLMOD_DOUBLE;
+        row.sorted   = 0;
+        row.packed   = 1;
+        row_given    = &row;
+      }
+    if (!cholmod_rowdel(position, row_given, impl.modified, &impl.common))
       {
         impl.factor_valid = false;
         return false;
