@@ -16,6 +16,33 @@ namespace unilateral::lcp
         changes += (a[i] != b[i]);
       return changes;
     }
+
+    /// A_{:,J} Y_J for the columns J = {j : fixed[j] == of_fixed}: the
+    /// coupling of the fixed values, or A on the free part. A loop over J
+    /// alone (a third of the stack bond's columns are fixed) instead of
+    /// Eigen's product of a sparse and a dynamic-width dense matrix, which
+    /// took 5 % of the stack bond's main thread on zeros.
+    DenseMatrix
+    multiply_columns(const SparseMatrix      &A,
+                     const std::vector<char> &fixed,
+                     const bool               of_fixed,
+                     const DenseMatrix       &Y)
+    {
+      DenseMatrix result = DenseMatrix::Zero(A.rows(), Y.cols());
+      const auto *const column_start = A.outerIndexPtr();
+      const auto *const row          = A.innerIndexPtr();
+      const double *const value      = A.valuePtr();
+      for (Index column = 0; column < Y.cols(); ++column)
+        {
+          double *const       out = result.col(column).data();
+          const double *const y   = Y.col(column).data();
+          for (Index j = 0; j < A.outerSize(); ++j)
+            if (static_cast<bool>(fixed[j]) == of_fixed && y[j] != 0)
+              for (Index k = column_start[j]; k < column_start[j + 1]; ++k)
+                out[row[k]] += value[k] * y[j];
+        }
+      return result;
+    }
   } // namespace
 
   ActiveSetSystem::ActiveSetSystem(
@@ -327,11 +354,7 @@ namespace unilateral::lcp
                          const DenseMatrix       &Y,
                          DenseMatrix             &KY) const
   {
-    DenseMatrix free_part = Y;
-    for (Index i = 0; i < A.rows(); ++i)
-      if (fixed[i])
-        free_part.row(i).setZero();
-    KY = A * free_part;
+    KY = multiply_columns(A, fixed, false, Y);
     for (Index i = 0; i < A.rows(); ++i)
       if (fixed[i])
         KY.row(i) = fixed_diagonal[i] * Y.row(i);
@@ -441,11 +464,7 @@ namespace unilateral::lcp
                          DenseMatrix             &X)
   {
     const Index n = A.rows();
-    DenseMatrix fixed_part = DenseMatrix::Zero(n, X.cols());
-    for (Index i = 0; i < n; ++i)
-      if (fixed[i])
-        fixed_part.row(i) = X.row(i);
-    const DenseMatrix coupling = A * fixed_part;
+    const DenseMatrix coupling = multiply_columns(A, fixed, true, X);
     counters.matrix_vector_products += static_cast<unsigned int>(X.cols());
 
     DenseMatrix rhs(n, X.cols());
