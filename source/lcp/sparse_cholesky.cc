@@ -115,6 +115,31 @@ namespace unilateral::lcp
       return matrix;
     }
 
+    // An n x 1 CHOLMOD column with the given (permuted, unsorted) rows and
+    // values, or only the pattern if @p values is null; @p column_start
+    // holds {0, number of entries}.
+    static cholmod_sparse
+    column_view(const std::size_t n,
+                Index            *column_start,
+                Index            *rows,
+                double           *values)
+    {
+      cholmod_sparse column{};
+      column.nrow   = n;
+      column.ncol   = 1;
+      column.nzmax  = std::max<std::size_t>(1, column_start[1]);
+      column.p      = column_start;
+      column.i      = rows;
+      column.x      = values;
+      column.stype  = 0;
+      column.itype  = CHOLMOD_INT;
+      column.xtype  = values != nullptr ? CHOLMOD_REAL : CHOLMOD_PATTERN;
+      column.dtype  = CHOLMOD_DOUBLE;
+      column.sorted = 0;
+      column.packed = 1;
+      return column;
+    }
+
     // Position of index k in the fill-reducing ordering; the inverse of
     // the analysis' ordering is computed on first need.
     Index
@@ -456,23 +481,15 @@ namespace unilateral::lcp
     const Index position = impl.position_of(k);
     // Row k of L as an n x 1 pattern.
     cholmod_sparse row{};
-    std::vector<Index> row_start = {0, 0};
-    cholmod_sparse    *row_given = nullptr;
+    Index          row_start[2] = {0, 0};
+    cholmod_sparse *row_given   = nullptr;
     if (impl.row_pattern(position, column_rows))
       {
         row_start[1] = static_cast<Index>(impl.row_pattern_positions.size());
-        row.nrow     = impl.modified->n;
-        row.ncol     = 1;
-        row.nzmax    = std::max<std::size_t>(1, row_start[1]);
-        row.p        = row_start.data();
-        row.i        = impl.row_pattern_positions.data();
-        row.stype    = 0;
-        row.itype    = CHOLMOD_INT;
-        row.xtype    = CHOLMOD_PATTERN;
-        row.dtype    = CHOLMOD_DOUBLE;
-        row.sorted   = 0;
-        row.packed   = 1;
-        row_given    = &row;
+        row          = Implementation::column_view(
+          impl.modified->n, row_start, impl.row_pattern_positions.data(),
+          nullptr);
+        row_given = &row;
       }
     if (!cholmod_rowdel(position, row_given, impl.modified, &impl.common))
       {
@@ -498,23 +515,13 @@ namespace unilateral::lcp
       return false;
     const Index position = impl.position_of(k);
     // Column k of P A P^T as an n x 1 sparse matrix (need not be sorted).
-    std::vector<Index> column_start = {0, static_cast<Index>(rows.size())};
+    Index              column_start[2] = {0, static_cast<Index>(rows.size())};
     std::vector<Index> permuted_rows(rows.size());
     for (std::size_t entry = 0; entry < rows.size(); ++entry)
       permuted_rows[entry] = impl.position_of(rows[entry]);
-    cholmod_sparse column{};
-    column.nrow   = impl.modified->n;
-    column.ncol   = 1;
-    column.nzmax  = rows.size();
-    column.p      = column_start.data();
-    column.i      = permuted_rows.data();
-    column.x      = const_cast<double *>(values.data());
-    column.stype  = 0;
-    column.itype  = CHOLMOD_INT;
-    column.xtype  = CHOLMOD_REAL;
-    column.dtype  = CHOLMOD_DOUBLE;
-    column.sorted = 0;
-    column.packed = 1;
+    cholmod_sparse column = Implementation::column_view(
+      impl.modified->n, column_start, permuted_rows.data(),
+      const_cast<double *>(values.data()));
     if (!cholmod_rowadd(position, &column, impl.modified, &impl.common))
       {
         impl.factor_valid = false;
