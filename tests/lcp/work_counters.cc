@@ -59,6 +59,16 @@ namespace
     return A;
   }
 
+  // The rows of column k of A (the pattern delete_row takes).
+  std::vector<Index>
+  column_pattern(const SparseMatrix &A, const Index k)
+  {
+    std::vector<Index> rows;
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it)
+      rows.push_back(it.row());
+    return rows;
+  }
+
   // b_i = sin(1 + i): a load with no special structure.
   Vector
   smooth_load(const Index n)
@@ -118,10 +128,7 @@ main()
       const auto delete_rows = [&](const std::vector<Index> &rows) {
         for (const Index k : rows)
           {
-            std::vector<Index> column_rows;
-            for (SparseMatrix::InnerIterator it(A, k); it; ++it)
-              column_rows.push_back(it.row());
-            updated.delete_row(k, A.coeff(k, k), column_rows);
+            updated.delete_row(k, A.coeff(k, k), column_pattern(A, k));
             fixed[k] = 1;
           }
       };
@@ -197,12 +204,7 @@ main()
       const std::vector<Index> rows = {5, 40, 77, 100, 143};
       const double predicted = 4 * cholesky.modification_path_entries(rows);
       for (const Index k : rows)
-        {
-          std::vector<Index> column_rows;
-          for (SparseMatrix::InnerIterator it(A, k); it; ++it)
-            column_rows.push_back(it.row());
-          cholesky.delete_row(k, A.coeff(k, k), column_rows);
-        }
+        cholesky.delete_row(k, A.coeff(k, k), column_pattern(A, k));
       const double ratio = predicted / cholesky.modification_flops();
       std::cout << "laplacian(" << grid
                 << "): predicted modification flops within 25% of CHOLMOD's "
