@@ -1,6 +1,7 @@
 #include <unilateral/lcp/active_set_system.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include <unistd.h>
 
@@ -96,6 +97,26 @@ namespace unilateral::lcp
         X.row(i) = X_free.row(reduced_index[i]);
       else
         X.row(i) = B.row(i) / fixed_diagonal[i];
+  }
+
+  bool
+  ActiveSetFactor::inverse_gram(const SparseMatrix &B, DenseMatrix &G) const
+  {
+    for (Index c = 0; c < B.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(B, c); it; ++it)
+        if (fixed[it.row()])
+          throw std::logic_error("ActiveSetFactor::inverse_gram: B has an "
+                                 "entry on a fixed row");
+    if (reduced_index.empty())
+      return cholesky.inverse_gram(B, G);
+    std::vector<Eigen::Triplet<double, Index>> entries;
+    entries.reserve(B.nonZeros());
+    for (Index c = 0; c < B.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(B, c); it; ++it)
+        entries.emplace_back(reduced_index[it.row()], c, it.value());
+    SparseMatrix B_free(n_free, B.cols());
+    B_free.setFromTriplets(entries.begin(), entries.end());
+    return cholesky.inverse_gram(B_free, G);
   }
 
   bool

@@ -77,6 +77,7 @@ namespace unilateral::lcp
       into.resolved_indices += from.resolved_indices;
       into.cg_iterations += from.cg_iterations;
       into.triangular_solves += from.triangular_solves;
+      into.partial_forward_solves += from.partial_forward_solves;
       into.matrix_vector_products += from.matrix_vector_products;
     }
 

@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace unilateral::lcp
@@ -599,6 +600,217 @@ namespace unilateral::lcp
     if (factor->is_super)
       return static_cast<double>(factor->xsize);
     return static_cast<double>(factor->nzmax);
+  }
+
+  bool
+  SparseCholesky::inverse_gram(const SparseMatrix &B,
+                               DenseMatrix        &G,
+                               const double        max_entries) const
+  {
+    auto &impl = *implementation;
+    if (!impl.factor_valid)
+      return false;
+    const Index k = static_cast<Index>(B.cols());
+    if (B.rows() == 0) // the empty factor of an empty matrix
+      {
+        G = DenseMatrix::Zero(k, k);
+        return true;
+      }
+    const cholmod_factor *L = impl.current();
+    const Index           n = static_cast<Index>(L->n);
+    if (B.rows() != n)
+      throw std::logic_error("SparseCholesky::inverse_gram: B has " +
+                             std::to_string(B.rows()) + " rows, A " +
+                             std::to_string(n));
+    const bool super = L->is_super;
+    // Supernodal factors are L L', simplicial ones (the modified copy) L D L'.
+    if (super != static_cast<bool>(L->is_ll))
+      return false;
+    const Index *Lp  = static_cast<const Index *>(L->p);
+    const Index *Li  = static_cast<const Index *>(L->i);
+    const Index *Lnz = static_cast<const Index *>(L->nz);
+    const Index *first_column = static_cast<const Index *>(L->super);
+    const Index *row_start    = static_cast<const Index *>(L->pi);
+    const Index *value_start  = static_cast<const Index *>(L->px);
+    const Index *rows         = static_cast<const Index *>(L->s);
+    const double *Lx          = static_cast<const double *>(L->x);
+
+    // The nodes of the forward solve: supernodes, or single columns.
+    const Index n_nodes = super ? static_cast<Index>(L->nsuper) : n;
+    std::vector<Index> node_of;
+    if (super)
+      {
+        node_of.resize(n);
+        for (Index s = 0; s < n_nodes; ++s)
+          for (Index j = first_column[s]; j < first_column[s + 1]; ++j)
+            node_of[j] = s;
+      }
+    const auto node    = [&](const Index j) { return super ? node_of[j] : j; };
+    const auto columns = [&](const Index s) {
+      return super ? first_column[s + 1] - first_column[s] : 1;
+    };
+    const auto first = [&](const Index s) {
+      return super ? first_column[s] : s;
+    };
+    // Parent in the elimination tree: the node of the first row below the
+    // diagonal block (the smallest one; simplicial columns modified by
+    // CHOLMOD need not be sorted).
+    std::vector<Index> parent(n_nodes, -2);
+    const auto         parent_of = [&](const Index s) {
+      if (parent[s] == -2)
+        {
+          Index below = n;
+          if (super)
+            {
+              const Index nscol = columns(s);
+              if (row_start[s + 1] - row_start[s] > nscol)
+                below = rows[row_start[s] + nscol];
+            }
+          else
+            for (Index q = Lp[s] + 1; q < Lp[s] + Lnz[s]; ++q)
+              below = std::min(below, Li[q]);
+          parent[s] = below < n ? node(below) : -1;
+        }
+      return parent[s];
+    };
+
+    // Columns ordered by where they enter the tree, so that a block's paths
+    // share most of their nodes.
+    std::vector<Index> order(k), entry(k, n);
+    for (Index c = 0; c < k; ++c)
+      {
+        order[c] = c;
+        for (SparseMatrix::InnerIterator it(B, c); it; ++it)
+          entry[c] = std::min(entry[c], impl.position_of(it.row()));
+      }
+    std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
+      return entry[a] < entry[b];
+    });
+
+    // Per block: its nodes (ascending), where each starts in the block's
+    // rows, and Y on those rows (scaled by D^-1/2 for L D L').
+    struct Block
+    {
+      std::vector<Index> nodes, offsets;
+      DenseMatrix        Y;
+    };
+    constexpr Index    width = 32;
+    std::vector<Block> blocks;
+    std::vector<char>  marked(n_nodes, 0);
+    std::vector<Index> local(n, -1);
+    double             kept = 0;
+    for (Index start = 0; start < k; start += width)
+      {
+        const Index w = std::min(width, k - start);
+        Block      &block = blocks.emplace_back();
+        for (Index c = start; c < start + w; ++c)
+          for (SparseMatrix::InnerIterator it(B, order[c]); it; ++it)
+            for (Index s = node(impl.position_of(it.row())); s >= 0 && !marked[s];
+                 s = parent_of(s))
+              {
+                marked[s] = 1;
+                block.nodes.push_back(s);
+              }
+        std::sort(block.nodes.begin(), block.nodes.end());
+        Index size = 0;
+        for (const Index s : block.nodes)
+          {
+            marked[s] = 0;
+            block.offsets.push_back(size);
+            for (Index j = 0; j < columns(s); ++j)
+              local[first(s) + j] = size + j;
+            size += columns(s);
+          }
+        kept += static_cast<double>(size) * w;
+        if (kept > max_entries)
+          return false;
+        block.Y = DenseMatrix::Zero(size, w);
+        for (Index c = 0; c < w; ++c)
+          for (SparseMatrix::InnerIterator it(B, order[start + c]); it; ++it)
+            block.Y(local[impl.position_of(it.row())], c) += it.value();
+
+        for (std::size_t q = 0; q < block.nodes.size(); ++q)
+          {
+            const Index s = block.nodes[q];
+            auto        Y_s = block.Y.middleRows(block.offsets[q], columns(s));
+            if (super)
+              {
+                const Index nscol = columns(s);
+                const Index nsrow = row_start[s + 1] - row_start[s];
+                using Stride      = Eigen::OuterStride<>;
+                const Eigen::Map<const DenseMatrix, 0, Stride> L11(
+                  Lx + value_start[s], nscol, nscol, Stride(nsrow));
+                const Eigen::Map<const DenseMatrix, 0, Stride> L21(
+                  Lx + value_start[s] + nscol, nsrow - nscol, nscol,
+                  Stride(nsrow));
+                L11.triangularView<Eigen::Lower>().solveInPlace(Y_s);
+                if (nsrow > nscol)
+                  {
+                    const DenseMatrix update = L21 * Y_s;
+                    const Index *below = rows + row_start[s] + nscol;
+                    for (Index r = 0; r < nsrow - nscol; ++r)
+                      block.Y.row(local[below[r]]) -= update.row(r);
+                  }
+              }
+            else
+              {
+                // Unit L; the diagonal entry of the column holds D.
+                const double d = Lx[Lp[s]];
+                if (!(d > 0))
+                  return false;
+                for (Index p = Lp[s] + 1; p < Lp[s] + Lnz[s]; ++p)
+                  block.Y.row(local[Li[p]]) -= Lx[p] * Y_s;
+                Y_s /= std::sqrt(d);
+              }
+          }
+        for (const Index s : block.nodes)
+          for (Index j = 0; j < columns(s); ++j)
+            local[first(s) + j] = -1;
+      }
+
+    // G over the rows two blocks share: the nodes on both of their paths.
+    DenseMatrix sorted_G(k, k);
+    std::vector<Index> rows_a, rows_b;
+    for (std::size_t a = 0; a < blocks.size(); ++a)
+      for (std::size_t b = a; b < blocks.size(); ++b)
+        {
+          const Block &A_block = blocks[a], &B_block = blocks[b];
+          auto         G_ab    = sorted_G.block(a * width, b * width,
+                                       A_block.Y.cols(), B_block.Y.cols());
+          if (a == b)
+            {
+              G_ab.noalias() = A_block.Y.transpose() * A_block.Y;
+              continue;
+            }
+          rows_a.clear();
+          rows_b.clear();
+          for (std::size_t p = 0, q = 0;
+               p < A_block.nodes.size() && q < B_block.nodes.size();)
+            if (A_block.nodes[p] < B_block.nodes[q])
+              ++p;
+            else if (B_block.nodes[q] < A_block.nodes[p])
+              ++q;
+            else
+              {
+                for (Index j = 0; j < columns(A_block.nodes[p]); ++j)
+                  {
+                    rows_a.push_back(A_block.offsets[p] + j);
+                    rows_b.push_back(B_block.offsets[q] + j);
+                  }
+                ++p;
+                ++q;
+              }
+          const DenseMatrix Y_a = A_block.Y(rows_a, Eigen::all);
+          const DenseMatrix Y_b = B_block.Y(rows_b, Eigen::all);
+          G_ab.noalias() = Y_a.transpose() * Y_b;
+          sorted_G.block(b * width, a * width, B_block.Y.cols(),
+                         A_block.Y.cols()) = G_ab.transpose();
+        }
+    G.resize(k, k);
+    for (Index r = 0; r < k; ++r)
+      for (Index c = 0; c < k; ++c)
+        G(order[r], order[c]) = sorted_G(r, c);
+    return true;
   }
 
   void

@@ -5,6 +5,59 @@
 
 namespace unilateral::lcp
 {
+  namespace
+  {
+    /**
+     * M = A_UU - A_UF A_FF^-1 A_FU by full solves, when inverse_gram
+     * declines: the response of the multipliers on U when one index j of U
+     * moves off its bound by one. K(X) x = e_j's load is -A_Fj on the free
+     * rows and D_jj at j; the multipliers on U are rows of A x, taken
+     * column by column of the symmetric A (no product with all of A).
+     * Blocks of columns keep the n x block work arrays small on a million
+     * unknowns, and the same two serve every block.
+     */
+    DenseMatrix
+    schur_by_full_solves(const Problem            &problem,
+                         const ActiveSetFactor    &factor,
+                         const std::vector<Index> &subset,
+                         Counters                 &counters)
+    {
+      const Index n = problem.size();
+      const Index k = static_cast<Index>(subset.size());
+      const auto  load_of = [&](const Index j, const Index c,
+                               DenseMatrix &load, const bool set) {
+        for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+          if (!factor.fixed[it.row()])
+            load(it.row(), c) = set ? -it.value() : 0.0;
+        load(j, c) = set ? factor.fixed_diagonal[j] : 0.0;
+      };
+      constexpr Index block = 32;
+      DenseMatrix     M(k, k);
+      DenseMatrix     load = DenseMatrix::Zero(n, std::min(block, k)), response;
+      for (Index first = 0; first < k; first += block)
+        {
+          const Index columns = std::min(block, k - first);
+          if (columns < load.cols())
+            load = DenseMatrix::Zero(n, columns);
+          for (Index c = 0; c < columns; ++c)
+            load_of(subset[first + c], c, load, true);
+          factor.solve(load, response);
+          counters.triangular_solves += static_cast<unsigned int>(columns);
+          for (Index c = 0; c < columns; ++c)
+            load_of(subset[first + c], c, load, false);
+          for (Index r = 0; r < k; ++r)
+            {
+              auto row = M.block(r, first, 1, columns);
+              row.setZero();
+              for (SparseMatrix::InnerIterator it(problem.A, subset[r]); it;
+                   ++it)
+                row += it.value() * response.row(it.row());
+            }
+        }
+      return M;
+    }
+  } // namespace
+
   SubsetResolution
   resolve_subset(const Problem            &problem,
                  ActiveSetSystem          &system,
@@ -36,45 +89,36 @@ namespace unilateral::lcp
     const Vector lambda_base = problem.A * base - problem.b;
     ++counters.matrix_vector_products;
 
-    // M column by column: the response of the multipliers on U when one
-    // index j of U moves off its bound by one. K(X) x = e_j's load is
-    // -A_Fj on the free rows and D_jj at j; the multipliers on U are rows
-    // of A x, taken column by column of the symmetric A (no product with
-    // all of A). Blocks of columns keep the n x block work arrays small on
-    // a million unknowns, and the same two serve every block.
+    // M = A_UU - A_UF A_FF^-1 A_FU. The last term is B' K(X)^-1 B for the
+    // sparse B = A_FU, solved forward along the elimination tree only
+    // (inverse_gram): the projection of the running bond m = 225, which
+    // resolves 446 indices, took 11.7 s instead of 25.0 s with full solves.
     const std::shared_ptr<const ActiveSetFactor> factor = system.factor();
     if (factor == nullptr || factor->fixed != fixed)
       return SubsetResolution::singular; // not after prepare_factor(fixed)
-    const auto load_of = [&](const Index j, const Index c, DenseMatrix &load,
-                             const bool set) {
-      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-        if (!fixed[it.row()])
-          load(it.row(), c) = set ? -it.value() : 0.0;
-      load(j, c) = set ? factor->fixed_diagonal[j] : 0.0;
-    };
-    constexpr Index block = 32;
-    DenseMatrix     M(k, k);
-    DenseMatrix     load = DenseMatrix::Zero(n, std::min(block, k)), response;
-    for (Index first = 0; first < k; first += block)
-      {
-        const Index columns = std::min(block, k - first);
-        if (columns < load.cols())
-          load = DenseMatrix::Zero(n, columns);
-        for (Index c = 0; c < columns; ++c)
-          load_of(subset[first + c], c, load, true);
-        factor->solve(load, response);
-        counters.triangular_solves += static_cast<unsigned int>(columns);
-        for (Index c = 0; c < columns; ++c)
-          load_of(subset[first + c], c, load, false);
-        for (Index r = 0; r < k; ++r)
-          {
-            auto row = M.block(r, first, 1, columns);
-            row.setZero();
-            for (SparseMatrix::InnerIterator it(problem.A, subset[r]); it;
-                 ++it)
-              row += it.value() * response.row(it.row());
-          }
-      }
+    DenseMatrix M = DenseMatrix::Zero(k, k);
+    {
+      std::vector<Index> in_subset(n, -1);
+      for (Index r = 0; r < k; ++r)
+        in_subset[subset[r]] = r;
+      std::vector<Eigen::Triplet<double, Index>> coupling;
+      for (Index c = 0; c < k; ++c)
+        for (SparseMatrix::InnerIterator it(problem.A, subset[c]); it; ++it)
+          if (!fixed[it.row()])
+            coupling.emplace_back(it.row(), c, it.value());
+          else if (in_subset[it.row()] >= 0)
+            M(in_subset[it.row()], c) = it.value();
+      SparseMatrix A_FU(n, k);
+      A_FU.setFromTriplets(coupling.begin(), coupling.end());
+      DenseMatrix gram;
+      if (factor->inverse_gram(A_FU, gram))
+        {
+          M -= gram;
+          counters.partial_forward_solves += static_cast<unsigned int>(k);
+        }
+      else
+        M = schur_by_full_solves(problem, *factor, subset, counters);
+    }
 
     // The dense LCP in z = u_U - l_U: lambda_U = q + M z, as a Problem
     // (A = M, b = -q, every index bounded below by 0).

@@ -179,6 +179,8 @@ namespace unilateral
       .set("resolved_indices", report.counters.resolved_indices)
       .set("cg_iterations", report.counters.cg_iterations)
       .set("triangular_solves", report.counters.triangular_solves)
+      .set("partial_forward_solves",
+           report.counters.partial_forward_solves)
       .set("matrix_vector_products", report.counters.matrix_vector_products);
     return summary;
   }

@@ -30,6 +30,12 @@ namespace unilateral::lcp
     /// X = K(X)^-1 B.
     void
     solve(const DenseMatrix &B, DenseMatrix &X) const;
+
+    /// G = B' K(X)^-1 B for sparse columns B that vanish on X (the Schur
+    /// complement's A_FU): SparseCholesky::inverse_gram on the factored
+    /// rows. False if that declines; the caller then solves in full.
+    bool
+    inverse_gram(const SparseMatrix &B, DenseMatrix &G) const;
   };
 
   /**

@@ -44,6 +44,9 @@ namespace unilateral::lcp
     unsigned int resolved_indices        = 0;
     unsigned int cg_iterations          = 0;
     unsigned int triangular_solves      = 0; ///< one per right-hand side
+    /// Right-hand sides solved forward only, along their elimination-tree
+    /// paths (SparseCholesky::inverse_gram, for resolved subsets).
+    unsigned int partial_forward_solves = 0;
     unsigned int matrix_vector_products = 0;
   };
 
