@@ -67,6 +67,20 @@ namespace unilateral::lcp
         fixed_diagonal[i] = mean;
     if (this->inherited && this->inherited->fixed.size() != std::size_t(A.rows()))
       this->inherited.reset();
+    // A stage after another on the same pattern (the projection after the
+    // regularised solve: A instead of A + eps I) orders it only once.
+    if (this->inherited &&
+        this->inherited->ordering_of_A.size() == std::size_t(A.rows()))
+      full_ordering = this->inherited->ordering_of_A;
+  }
+
+  void
+  ActiveSetSystem::order_once()
+  {
+    if (!full_ordering.empty())
+      return;
+    full_ordering        = SparseCholesky::amd_ordering(A, counters);
+    own->ordering_of_A   = full_ordering;
   }
 
   std::shared_ptr<const ActiveSetFactor>
@@ -154,15 +168,13 @@ namespace unilateral::lcp
             }
         // The one AMD ordering of A serves both ways of factorising (an
         // analysis that orders A again costs 1.5 s more on laminae m = 225).
-        if (full_ordering.empty())
-          full_ordering = SparseCholesky::amd_ordering(A, counters);
+        order_once();
         own_valid = own->cholesky.factorise(reduced, full_ordering, counters);
         return own_valid;
       }
 
     // A_FF on its own, in the ordering of A restricted to F.
-    if (full_ordering.empty())
-      full_ordering = SparseCholesky::amd_ordering(A, counters);
+    order_once();
     own->reduced_index.assign(n, -1);
     Index n_free = 0;
     for (Index i = 0; i < n; ++i)

@@ -281,6 +281,31 @@ main()
               << yes_no(relative_difference(x, x_fresh) < 1e-12) << "\n";
   }
 
+  {
+    // A later system on the same A (the projection after the regularised
+    // solve) inherits the factor and, with it, the ordering of A: a fixed
+    // set far from the inherited one is factorised anew without a second
+    // AMD ordering.
+    const SparseMatrix A = laplacian(40);
+    const Index        n = A.rows();
+    const Vector       b = smooth_load(n);
+    Counters           counters;
+    std::vector<char>  X(n, 0);
+    for (Index i = 0; i < n; i += 7)
+      X[i] = 1;
+    Vector          x = Vector::Zero(n);
+    ActiveSetSystem first(A, counters);
+    first.solve(X, b, x);
+    for (Index i = 0; i < n; i += 5)
+      X[i] = 1;
+    ActiveSetSystem later(A, counters, first.factor());
+    later.solve(X, b, x);
+    std::cout << "a later system on the same A: factorised again: "
+              << yes_no(counters.numeric_factorisations == 2)
+              << ", ordered once: " << yes_no(counters.orderings == 1)
+              << "\n";
+  }
+
   const Problem problem = chain(60);
   Vector        u;
 

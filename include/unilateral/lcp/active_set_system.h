@@ -25,6 +25,9 @@ namespace unilateral::lcp
     Index              n_free = 0;
     /// D_X on the fixed indices.
     Vector         fixed_diagonal;
+    /// The AMD ordering of A's pattern the factor was made in (new-to-old),
+    /// for a later system on the same pattern.
+    std::vector<Index> ordering_of_A;
     SparseCholesky cholesky;
 
     /// X = K(X)^-1 B.
@@ -137,6 +140,11 @@ namespace unilateral::lcp
     /// Factorise K(X), plus @p shift on the diagonal of the free part.
     bool
     factorise(const std::vector<char> &fixed, double shift = 0);
+
+    /// Compute the AMD ordering of A unless it is known (computed before,
+    /// or inherited with a factor of the same pattern).
+    void
+    order_once();
 
     /// Update the own full-pattern factor to the fixed set @p fixed; false
     /// (and the own factor dropped) if that would exceed the budget, if
