@@ -116,18 +116,21 @@ namespace unilateral::lcp
   bool
   ActiveSetFactor::inverse_gram(const SparseMatrix &B, DenseMatrix &G) const
   {
-    for (Index c = 0; c < B.outerSize(); ++c)
-      for (SparseMatrix::InnerIterator it(B, c); it; ++it)
-        if (fixed[it.row()])
-          throw std::logic_error("ActiveSetFactor::inverse_gram: B has an "
-                                 "entry on a fixed row");
-    if (reduced_index.empty())
-      return cholesky.inverse_gram(B, G);
+    // B in the rows of the factorised matrix (those of A for the full
+    // pattern, of A_FF for a reduced one).
     std::vector<Eigen::Triplet<double, Index>> entries;
     entries.reserve(B.nonZeros());
     for (Index c = 0; c < B.outerSize(); ++c)
       for (SparseMatrix::InnerIterator it(B, c); it; ++it)
-        entries.emplace_back(reduced_index[it.row()], c, it.value());
+        {
+          if (fixed[it.row()])
+            throw std::logic_error("ActiveSetFactor::inverse_gram: B has an "
+                                   "entry on a fixed row");
+          if (!reduced_index.empty())
+            entries.emplace_back(reduced_index[it.row()], c, it.value());
+        }
+    if (reduced_index.empty())
+      return cholesky.inverse_gram(B, G);
     SparseMatrix B_free(n_free, B.cols());
     B_free.setFromTriplets(entries.begin(), entries.end());
     return cholesky.inverse_gram(B_free, G);

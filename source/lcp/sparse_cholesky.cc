@@ -156,6 +156,18 @@ namespace unilateral::lcp
       return inverse_ordering[k];
     }
 
+    // Parent of column j in the elimination tree of a simplicial factor:
+    // the first row below the diagonal (CHOLMOD keeps the diagonal first
+    // and the rows of each column sorted), -1 at a root.
+    static Index
+    simplicial_parent(const cholmod_factor *L, const Index j)
+    {
+      const auto *Lp  = static_cast<const Index *>(L->p);
+      const auto *Li  = static_cast<const Index *>(L->i);
+      const auto *Lnz = static_cast<const Index *>(L->nz);
+      return Lnz[j] > 1 ? Li[Lp[j] + 1] : -1;
+    }
+
     void
     compute_path_entries();
 
@@ -435,8 +447,7 @@ namespace unilateral::lcp
    * The pattern of row @p position of the modified factor, from the
    * pattern of the matrix's column there: row k of L is the set of columns
    * on the paths from each j < k with a_jk != 0 up to k in the tree of L
-   * (parent of j: the first row below the diagonal of column j; columns are
-   * kept sorted). Entries L_kj stored outside those paths (supernodal
+   * (simplicial_parent). Entries L_kj stored outside those paths (supernodal
    * amalgamation, fill of another active set) are exact zeros: every term
    * that could make them nonzero has a structural zero as a factor. False
    * if a path does not lead to k (then CHOLMOD searches itself).
@@ -446,9 +457,6 @@ namespace unilateral::lcp
     const Index               position,
     const std::vector<Index> &column_rows)
   {
-    const auto *Lp  = static_cast<const Index *>(modified->p);
-    const auto *Li  = static_cast<const Index *>(modified->i);
-    const auto *Lnz = static_cast<const Index *>(modified->nz);
     row_mark.resize(modified->n, 0);
     row_pattern_positions.clear();
     bool complete = true;
@@ -461,7 +469,7 @@ namespace unilateral::lcp
           {
             row_mark[j] = 1;
             row_pattern_positions.push_back(j);
-            j = Lnz[j] > 1 ? Li[Lp[j] + 1] : -1;
+            j = simplicial_parent(modified, j);
           }
         // A path ends at k or at a column already on the pattern.
         complete = complete && j >= 0 && (j == position || row_mark[j]);
@@ -653,25 +661,12 @@ namespace unilateral::lcp
       return super ? first_column[s] : s;
     };
     // Parent in the elimination tree: the node of the first row below the
-    // diagonal block (the smallest one; simplicial columns modified by
-    // CHOLMOD need not be sorted).
-    std::vector<Index> parent(n_nodes, -2);
-    const auto         parent_of = [&](const Index s) {
-      if (parent[s] == -2)
-        {
-          Index below = n;
-          if (super)
-            {
-              const Index nscol = columns(s);
-              if (row_start[s + 1] - row_start[s] > nscol)
-                below = rows[row_start[s] + nscol];
-            }
-          else
-            for (Index q = Lp[s] + 1; q < Lp[s] + Lnz[s]; ++q)
-              below = std::min(below, Li[q]);
-          parent[s] = below < n ? node(below) : -1;
-        }
-      return parent[s];
+    // diagonal block.
+    const auto parent_of = [&](const Index s) -> Index {
+      if (!super)
+        return Implementation::simplicial_parent(L, s);
+      const Index below = row_start[s] + columns(s);
+      return below < row_start[s + 1] ? node(rows[below]) : -1;
     };
 
     // Columns ordered by where they enter the tree, so that a block's paths

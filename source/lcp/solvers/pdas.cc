@@ -313,19 +313,18 @@ namespace unilateral::lcp
               {
                 std::vector<char>  in_subset(n, 0);
                 std::vector<Index> subset;
-                for (const auto &changes : recent_changes)
-                  for (const Index i : changes)
-                    if (!in_subset[i])
-                      {
-                        in_subset[i] = 1;
-                        subset.push_back(i);
-                      }
-                for (const Index i : violated)
+                const auto         add = [&](const Index i) {
                   if (!in_subset[i])
                     {
                       in_subset[i] = 1;
                       subset.push_back(i);
                     }
+                };
+                for (const auto &changes : recent_changes)
+                  for (const Index i : changes)
+                    add(i);
+                for (const Index i : violated)
+                  add(i);
                 // The drifting boundary moves on to the neighbours: the
                 // constrained indices A couples to these (laminae m = 100:
                 // 28 iterations instead of 49 with them, 42 without).
@@ -334,11 +333,8 @@ namespace unilateral::lcp
                   for (SparseMatrix::InnerIterator it(problem.A, subset[q]);
                        it;
                        ++it)
-                    if (!in_subset[it.row()] && is_constrained[it.row()])
-                      {
-                        in_subset[it.row()] = 1;
-                        subset.push_back(it.row());
-                      }
+                    if (is_constrained[it.row()])
+                      add(it.row());
                 resolved = resolve(subset);
               }
             if (resolved)
