@@ -78,6 +78,7 @@ namespace unilateral::lcp
       into.cg_iterations += from.cg_iterations;
       into.triangular_solves += from.triangular_solves;
       into.partial_forward_solves += from.partial_forward_solves;
+      into.centrality_correctors += from.centrality_correctors;
       into.matrix_vector_products += from.matrix_vector_products;
     }
 

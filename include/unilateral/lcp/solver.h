@@ -84,6 +84,8 @@ namespace unilateral::lcp
       /// Mehrotra's predictor-corrector instead of the paper's fixed
       /// centring (the hand-over from cycling PDAS always uses it).
       bool   predictor_corrector = false;
+      /// Gondzio's centrality correctors per predictor-corrector iteration.
+      unsigned int centrality_correctors = 2;
     } interior_point;
 
     struct

@@ -30,7 +30,14 @@
  * factorisation of the matrix of (47) and two solves, an affine step
  * (delta = 0) that sets delta = (gap after it / gap)^3, and a corrected
  * step with the affine step's second-order term. One step length for z and
- * w, as (50) (the LCP couples them).
+ * w, as (50) (the LCP couples them). Then up to 'Centrality correctors' of
+ * Gondzio ("Multiple centrality corrections in a primal-dual method for
+ * linear programming", 1996): at the trial step min(1, 1.5 alpha) the
+ * products (z - psi)_i w_i outside [0.1, 10] sigma mu are aimed back into
+ * that band by one more solve each; a corrector stays only if it lengthens
+ * the step by 1 %. On the running bond walls the affine step is cut to
+ * 0.2-0.5 by a few badly centred products in every iteration, and the
+ * correctors save a fifth of the factorisations (m = 100: 28 -> 23).
  */
 #include <unilateral/lcp/shifted_system.h>
 #include <unilateral/lcp/solver.h>
@@ -175,7 +182,48 @@ namespace unilateral::lcp
                 }
               return alpha_max;
             };
+            // Gondzio's correctors to the direction of @p centring, whose
+            // step is @p step; returns the step of the direction kept.
+            const auto correct_centrality = [&](Vector      &centring,
+                                                const double target,
+                                                double       step) {
+              Vector kept_du, kept_dw;
+              for (unsigned int c = 0;
+                   c < options.centrality_correctors && step < 1;
+                   ++c)
+                {
+                  const double trial = std::min(1.0, 1.5 * step);
+                  const double low = 0.1 * target, high = 10 * target;
+                  for (Index j = 0; j < n_c; ++j)
+                    {
+                      const double product =
+                        (gap[j] + trial * du[problem.constrained[j]]) *
+                        (w[j] + trial * dw[j]);
+                      // Raise small products to the band, lower large ones
+                      // by at most its top.
+                      if (product < low)
+                        centring[j] += low - product;
+                      else if (product > high)
+                        centring[j] += std::max(high - product, -high);
+                    }
+                  kept_du = du;
+                  kept_dw = dw;
+                  direction(centring);
+                  const double corrected = largest_step();
+                  if (corrected < 1.01 * step)
+                    {
+                      du = std::move(kept_du);
+                      dw = std::move(kept_dw);
+                      break;
+                    }
+                  ++report.counters.centrality_correctors;
+                  step = corrected;
+                }
+              return step;
+            };
             Vector centring(n_c);
+            // sigma mu: the mean product the centring aims at.
+            double target = 0;
             if (!options.predictor_corrector)
               // (42): mu_k = delta (z - psi)^T w / |J1|.
               centring.setConstant(
@@ -196,15 +244,16 @@ namespace unilateral::lcp
                     (w[j] + alpha_affine * dw[j]);
                 const double sigma = std::min(
                   1.0, std::pow(affine_complementarity / complementarity, 3));
-                const double mean_complementarity = complementarity / n_c;
+                target = sigma * complementarity / n_c;
                 for (Index j = 0; j < n_c; ++j)
-                  centring[j] = sigma * mean_complementarity -
-                                du[problem.constrained[j]] * dw[j];
+                  centring[j] = target - du[problem.constrained[j]] * dw[j];
               }
             direction(centring);
+            double step = largest_step();
+            if (options.predictor_corrector)
+              step = correct_centrality(centring, target, step);
             // (50).
-            const double alpha =
-              std::min(1.0, options.step_factor * largest_step());
+            const double alpha = std::min(1.0, options.step_factor * step);
 
             // (54).
             z += alpha * du;
