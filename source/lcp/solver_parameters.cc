@@ -205,7 +205,8 @@ namespace unilateral::lcp
         dealii::Patterns::Selection("basic|predictor-corrector"),
         "basic: the method of Fernandes et al. (one Newton step per "
         "iteration, centring delta). predictor-corrector: Mehrotra's, which "
-        "chooses the centring from an affine step and corrects its second "
+        "starts from his heuristic point (one more factorisation), chooses "
+        "the centring from an affine step and corrects its second "
         "order term: two solves with one factorisation per iteration, and "
         "far fewer iterations where the solution is degenerate (running bond "
         "walls, where the basic method converges only linearly). The "
