@@ -245,13 +245,14 @@ namespace unilateral::lcp
             const auto correct_centrality = [&](Vector      &centring,
                                                 const double target,
                                                 double       step) {
-              Vector kept_du, kept_dw;
+              // The band the products are aimed at.
+              const double low = 0.1 * target, high = 10 * target;
+              Vector       kept_du, kept_dw;
               for (unsigned int c = 0;
                    c < options.centrality_correctors && step < 1;
                    ++c)
                 {
                   const double trial = std::min(1.0, 1.5 * step);
-                  const double low = 0.1 * target, high = 10 * target;
                   for (Index j = 0; j < n_c; ++j)
                     {
                       const double product =
