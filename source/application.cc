@@ -1,5 +1,6 @@
 #include <unilateral/application.h>
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/memory.h>
 #include <unilateral/scenes/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -26,8 +27,9 @@ namespace unilateral
       "\n"
       "A run writes into <Output/Directory>/<Output/Run name>/ (by default\n"
       "output/<name of FILE>/): summary.json, a copy of FILE.prm, and VTU/PVD\n"
-      "files for ParaView. Exit code: 0 converged, 1 bad input, 2 the solver\n"
-      "did not converge (its status is in summary.json).\n";
+      "files for ParaView. Exit code: 0 converged, 1 bad input (or a problem\n"
+      "too large for the memory), 2 the solver did not converge (its status\n"
+      "is in summary.json).\n";
 
     std::string
     default_scene()
@@ -45,6 +47,15 @@ namespace unilateral
                         default_scene(),
                         dealii::Patterns::Selection(SceneRegistry::selection()),
                         "Which problem to build and solve.");
+      prm.declare_entry(
+        "Memory limit",
+        "0",
+        dealii::Patterns::Double(0),
+        "Most memory the run may use, in GB; 0: the machine's available "
+        "memory. Before building the matrix, ordering it and allocating a "
+        "Cholesky factor, the run checks that these fit, and stops with a "
+        "message naming the parameters that make the problem smaller "
+        "instead of being killed by the kernel half-way (exit code 1).");
       prm.enter_subsection("Output");
       {
         prm.declare_entry("Directory",
@@ -123,6 +134,7 @@ namespace unilateral
       prm.parse_input(parameter_file);
 
       const SceneInfo &scene_info = SceneRegistry::get(prm.get("Scene"));
+      memory::set_limit(1e9 * prm.get_double("Memory limit"));
 
       RunContext context;
       context.parameter_file = parameter_file;
@@ -173,7 +185,25 @@ namespace unilateral
 
       out << "unilateral: scene " << scene_info.name << ", run '"
           << context.run_name << "'" << std::endl;
-      const lcp::Report report = scene->run(context);
+      lcp::Report report;
+      try
+        {
+          report = scene->run(context);
+        }
+      catch (const OutOfMemory &error)
+        {
+          throw InputError(std::string(error.what()) +
+                           "; make the problem smaller (" +
+                           scene->size_parameters() + ")");
+        }
+      catch (const std::bad_alloc &)
+        {
+          throw InputError(
+            "out of memory (an allocation failed, " +
+            memory::format(memory::available()) +
+            " left); make the problem smaller (" + scene->size_parameters() +
+            ")");
+        }
       out << "  results in " << context.output_directory.string() << "/"
           << std::endl;
       if (context.print_timings)

@@ -1,3 +1,4 @@
+#include <unilateral/base/memory.h>
 #include <unilateral/lcp/sparse_cholesky.h>
 
 #include <cholmod.h>
@@ -87,6 +88,29 @@ namespace unilateral::lcp
       if (factor != nullptr)
         cholmod_free_factor(&factor, &common);
       cholmod_finish(&common);
+    }
+
+    /// AMD works on the pattern of A + A' with elbow room and a few
+    /// arrays of length n: refuse an ordering that cannot fit.
+    static void
+    require_ordering_memory(const SparseMatrix &A)
+    {
+      memory::require(sizeof(Index) * (2.4 * A.nonZeros() + 10.0 * A.rows()),
+                      "the fill-reducing ordering of a system with " +
+                        std::to_string(A.rows()) + " unknowns");
+    }
+
+    /// A failed CHOLMOD call of @p step on a system with @p n unknowns:
+    /// OutOfMemory if that is what it reports.
+    [[noreturn]] void
+    throw_failure(const std::string &step, const Index n) const
+    {
+      if (common.status == CHOLMOD_OUT_OF_MEMORY)
+        throw OutOfMemory("CHOLMOD ran out of memory in the " + step +
+                          " of a system with " + std::to_string(n) +
+                          " unknowns");
+      throw std::runtime_error("CHOLMOD " + step + " failed (status " +
+                               std::to_string(common.status) + ")");
     }
 
     // The factor solves and modifications use.
@@ -230,6 +254,7 @@ namespace unilateral::lcp
         impl.set_amalgamation(relaxed_supernodes);
         if (ordering.empty())
           {
+            Implementation::require_ordering_memory(A);
             impl.common.nmethods           = 1;
             impl.common.method[0].ordering = CHOLMOD_AMD;
             impl.factor = cholmod_analyze(&matrix, &impl.common);
@@ -243,9 +268,15 @@ namespace unilateral::lcp
               &impl.common);
           }
         if (impl.factor == nullptr)
-          throw std::runtime_error(
-            "CHOLMOD analysis failed (status " +
-            std::to_string(impl.common.status) + ")");
+          impl.throw_failure("analysis", A.rows());
+        // The numeric factor is allocated next: refuse it here, with a
+        // message, rather than be killed by the kernel half-way.
+        memory::require(
+          impl.factor->is_super ?
+            8.0 * static_cast<double>(impl.factor->xsize) :
+            (8.0 + sizeof(Index)) * impl.common.lnz,
+          "the Cholesky factor of a system with " +
+            std::to_string(A.rows()) + " unknowns");
         impl.pattern_size     = A.rows();
         impl.pattern_nonzeros = A.nonZeros();
         impl.pattern_hash     = hash;
@@ -283,7 +314,7 @@ namespace unilateral::lcp
     impl.factor_valid = (impl.common.status == CHOLMOD_OK &&
                          impl.factor->minor == impl.factor->n);
     if (impl.common.status == CHOLMOD_OUT_OF_MEMORY)
-      throw std::runtime_error("CHOLMOD factorisation ran out of memory");
+      impl.throw_failure("factorisation", A.rows());
     // A factorisation that completes can still be numerically singular: a
     // body held by no constraint leaves a pivot at round-off, and the solve
     // then moves it by 1e10 with a backward error that looks perfect. Such
@@ -304,6 +335,10 @@ namespace unilateral::lcp
       return false;
     if (impl.modified == nullptr)
       {
+        // A copy as a simplicial LDL' with room to grow: without the memory
+        // for it the caller refactorises instead.
+        if (2.5 * 12.0 * factor_nonzeros() > memory::available())
+          return false;
         impl.modified = cholmod_copy_factor(impl.factor, &impl.common);
         if (impl.modified == nullptr)
           return false;
@@ -575,9 +610,9 @@ namespace unilateral::lcp
       return ordering;
     Implementation impl;
     cholmod_sparse matrix = Implementation::view(A);
+    Implementation::require_ordering_memory(A);
     if (!cholmod_amd(&matrix, nullptr, 0, ordering.data(), &impl.common))
-      throw std::runtime_error("CHOLMOD AMD ordering failed (status " +
-                               std::to_string(impl.common.status) + ")");
+      impl.throw_failure("AMD ordering", A.rows());
     ++counters.orderings;
     return ordering;
   }
@@ -839,8 +874,7 @@ namespace unilateral::lcp
     cholmod_dense *solution =
       cholmod_solve(CHOLMOD_A, impl.current(), &rhs, &impl.common);
     if (solution == nullptr)
-      throw std::runtime_error("CHOLMOD solve failed (status " +
-                               std::to_string(impl.common.status) + ")");
+      impl.throw_failure("solve", B.rows());
     X = Eigen::Map<DenseMatrix>(static_cast<double *>(solution->x),
                                 B.rows(),
                                 B.cols());

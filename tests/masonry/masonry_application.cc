@@ -1,6 +1,7 @@
 // The masonry scene through the application, as a user runs it:
 //  1. bad input gives exit code 1 and one line naming the parameter, the
-//     value and the fix (printed here: code and message);
+//     value and the fix (printed here: code and message), and so does a
+//     wall too large for 'Memory limit';
 //  2. two runs write VTU/PVD and summary.json, which read_masonry_vtu.py
 //     reads back with VTK's XML reader (what ParaView sees) and checks
 //     against the exact column solution (laminae, gap 0, P2) and for a
@@ -115,6 +116,11 @@ main()
   bad_input("unknown solver",
             masonry_prm("",
                         "subsection Solver\n  set Method = simplex\nend\n"));
+  // A wall too large for the memory it may use: refused before its
+  // matrix is built (1 MB is less than the test already holds).
+  bad_input("memory limit 1 MB",
+            "set Memory limit = 0.001\n" +
+              masonry_prm("  set Blocks per side = 2\n"));
   {
     std::vector<std::string> arguments = {"unilateral", "no_such_file.prm"};
     char              *argv[] = {arguments[0].data(), arguments[1].data()};

@@ -23,6 +23,12 @@ namespace unilateral
     lcp::Report
     run(RunContext &context) override;
 
+    std::string
+    size_parameters() const override
+    {
+      return "the LCP in 'LCP/Matrix file' = " + matrix_file;
+    }
+
   private:
     std::string matrix_file;
     std::string rhs_file;

@@ -76,6 +76,14 @@ namespace unilateral
     {
       return false;
     }
+
+    /**
+     * The parameters that set the problem's size, with their values, for
+     * the message of a run that does not fit into memory ("'Masonry/Blocks
+     * per side' = 1000").
+     */
+    virtual std::string
+    size_parameters() const = 0;
   };
 
   struct SceneInfo

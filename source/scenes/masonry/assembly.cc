@@ -1,8 +1,10 @@
+#include <unilateral/base/memory.h>
 #include <unilateral/scenes/masonry/assembly.h>
 
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace unilateral::masonry
@@ -67,6 +69,15 @@ namespace unilateral::masonry
             cells_of[fill[cell_variables[k]]++] = static_cast<unsigned int>(c);
       }
 
+      // The pattern is built here and copied into A (indices and values):
+      // refuse a wall whose matrix cannot fit before building it. Each cell
+      // couples at most its variables squared (shared pairs counted twice).
+      double most_entries = 0;
+      for (std::size_t c = 0; c < n_cells; ++c)
+        most_entries += std::pow(cell_start[c + 1] - cell_start[c], 2.0);
+      memory::require(std::min(most_entries, double(n) * n) *
+                        (2 * sizeof(lcp::Index) + 8),
+                      "the matrix A~ of " + std::to_string(n) + " unknowns");
       std::vector<lcp::Index> outer(n + 1, 0);
       std::vector<lcp::Index> inner;
       inner.reserve(cell_variables.size() * 16);

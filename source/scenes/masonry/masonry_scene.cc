@@ -373,6 +373,15 @@ namespace unilateral::masonry
     unilateral::write_summary(context, summary);
   }
 
+  std::string
+  MasonryScene::size_parameters() const
+  {
+    return "'Masonry/Blocks per side' = " +
+           std::to_string(parameters.geometry.m) +
+           " or 'Masonry/Refinement' = " +
+           std::to_string(parameters.geometry.refinement);
+  }
+
   lcp::Report
   MasonryScene::run(RunContext &context)
   {

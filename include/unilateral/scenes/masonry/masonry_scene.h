@@ -99,6 +99,9 @@ namespace unilateral::masonry
       return true;
     }
 
+    std::string
+    size_parameters() const override;
+
     /**
      * make_grid and setup_system only: n and n_c without assembling or
      * solving (for the Table 2 counts). Timer sections go to

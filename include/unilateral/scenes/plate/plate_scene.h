@@ -68,6 +68,14 @@ namespace unilateral::plate
       return 0;
     }
 
+    std::string
+    size_parameters() const override
+    {
+      return "'Plate/Geometry/Elements x' = " +
+             std::to_string(parameters.geometry.n_x) +
+             " or 'Elements y' = " + std::to_string(parameters.geometry.n_y);
+    }
+
     /// One mesh of the coarse-mesh start (nested iteration), coarsest last.
     struct CoarseLevel
     {

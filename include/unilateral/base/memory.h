@@ -1,0 +1,50 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace unilateral
+{
+  /**
+   * A run that does not fit into memory: thrown before the allocation that
+   * would not fit (so that the kernel's out-of-memory killer does not end
+   * the run without a word), or when an allocation has failed. The
+   * application adds which parameters make the problem smaller.
+   */
+  class OutOfMemory : public std::runtime_error
+  {
+  public:
+    explicit OutOfMemory(const std::string &message)
+      : std::runtime_error(message)
+    {}
+  };
+
+  namespace memory
+  {
+    /**
+     * Cap what a run may use in total, in bytes ('Memory limit'); 0 leaves
+     * only the machine's available memory as the bound.
+     */
+    void
+    set_limit(double bytes);
+
+    /**
+     * What the run can still allocate, in bytes: the machine's available
+     * memory (MemAvailable in /proc/meminfo, which counts reclaimable page
+     * cache as free), or the limit less the run's resident memory if that
+     * is smaller. Infinite where neither can be read.
+     */
+    double
+    available();
+
+    /**
+     * Throw OutOfMemory naming @p what unless @p bytes more fit.
+     */
+    void
+    require(double bytes, const std::string &what);
+
+    /// "1.2 GB", "350 MB", "12 kB".
+    std::string
+    format(double bytes);
+  } // namespace memory
+} // namespace unilateral

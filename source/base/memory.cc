@@ -1,0 +1,90 @@
+#include <unilateral/base/memory.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace unilateral::memory
+{
+  namespace
+  {
+    double limit = 0;
+
+    // MemAvailable in bytes, or infinity if the kernel does not say.
+    double
+    machine_available()
+    {
+      std::ifstream meminfo("/proc/meminfo");
+      std::string   key, unit;
+      double        kilobytes = 0;
+      while (meminfo >> key >> kilobytes)
+        {
+          std::getline(meminfo, unit);
+          if (key == "MemAvailable:")
+            return 1024 * kilobytes;
+        }
+      return std::numeric_limits<double>::infinity();
+    }
+
+    // The run's resident memory in bytes (0 if unknown).
+    double
+    resident()
+    {
+      std::ifstream statm("/proc/self/statm");
+      double        pages = 0, resident_pages = 0;
+      if (!(statm >> pages >> resident_pages))
+        return 0;
+      return resident_pages * static_cast<double>(sysconf(_SC_PAGESIZE));
+    }
+  } // namespace
+
+  void
+  set_limit(const double bytes)
+  {
+    limit = bytes;
+  }
+
+  double
+  available()
+  {
+    const double machine = machine_available();
+    if (limit > 0)
+      return std::min(machine, std::max(0.0, limit - resident()));
+    return machine;
+  }
+
+  void
+  require(const double bytes, const std::string &what)
+  {
+    const double left = available();
+    if (bytes <= left)
+      return;
+    std::ostringstream message;
+    message << what << " needs " << format(bytes) << " more memory, but only "
+            << format(left) << " is left"
+            << (limit > 0 ? " under 'Memory limit' = " + format(limit) :
+                            std::string(" on this machine"));
+    throw OutOfMemory(message.str());
+  }
+
+  std::string
+  format(const double bytes)
+  {
+    const char *units[] = {"bytes", "kB", "MB", "GB", "TB"};
+    double      value   = bytes;
+    int         unit    = 0;
+    while (value >= 1000 && unit < 4)
+      {
+        value /= 1000;
+        ++unit;
+      }
+    char text[32];
+    std::snprintf(text, sizeof text, value < 10 && unit > 0 ? "%.1f %s" : "%.0f %s",
+                  value, units[unit]);
+    return text;
+  }
+} // namespace unilateral::memory
