@@ -1,9 +1,8 @@
+#include <unilateral/base/memory.h>
 #include <unilateral/lcp/active_set_system.h>
 
 #include <cmath>
 #include <stdexcept>
-
-#include <unistd.h>
 
 namespace unilateral::lcp
 {
@@ -234,9 +233,7 @@ namespace unilateral::lcp
     // Values and row indices, the simplicial copy's room to grow, and the
     // supernodal copy it is converted from: about 24 bytes per entry.
     const double copy_bytes = 24 * own->cholesky.factor_nonzeros();
-    const double available  = static_cast<double>(sysconf(_SC_AVPHYS_PAGES)) *
-                             static_cast<double>(sysconf(_SC_PAGESIZE));
-    return available <= 0 || copy_bytes < 0.5 * available;
+    return copy_bytes < 0.5 * memory::available();
   }
 
   bool

@@ -335,10 +335,6 @@ namespace unilateral::lcp
       return false;
     if (impl.modified == nullptr)
       {
-        // A copy as a simplicial LDL' with room to grow: without the memory
-        // for it the caller refactorises instead.
-        if (2.5 * 12.0 * factor_nonzeros() > memory::available())
-          return false;
         impl.modified = cholmod_copy_factor(impl.factor, &impl.common);
         if (impl.modified == nullptr)
           return false;
