@@ -2,7 +2,7 @@
 
 #include <unistd.h>
 
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -83,8 +83,11 @@ namespace unilateral::memory
         ++unit;
       }
     char text[32];
-    std::snprintf(text, sizeof text, value < 10 && unit > 0 ? "%.1f %s" : "%.0f %s",
-                  value, units[unit]);
+    std::snprintf(text,
+                  sizeof text,
+                  value < 10 && unit > 0 ? "%.1f %s" : "%.0f %s",
+                  value,
+                  units[unit]);
     return text;
   }
 } // namespace unilateral::memory

@@ -270,13 +270,19 @@ namespace unilateral::lcp
         if (impl.factor == nullptr)
           impl.throw_failure("analysis", A.rows());
         // The numeric factor is allocated next: refuse it here, with a
-        // message, rather than be killed by the kernel half-way.
-        memory::require(
+        // message, rather than be killed by the kernel half-way (and leave
+        // no analysis behind that a later call could take for this one's).
+        const double factor_bytes =
           impl.factor->is_super ?
             8.0 * static_cast<double>(impl.factor->xsize) :
-            (8.0 + sizeof(Index)) * impl.common.lnz,
-          "the Cholesky factor of a system with " +
-            std::to_string(A.rows()) + " unknowns");
+            (8.0 + sizeof(Index)) * impl.common.lnz;
+        if (factor_bytes > memory::available())
+          {
+            cholmod_free_factor(&impl.factor, &impl.common);
+            memory::require(factor_bytes,
+                            "the Cholesky factor of a system with " +
+                              std::to_string(A.rows()) + " unknowns");
+          }
         impl.pattern_size     = A.rows();
         impl.pattern_nonzeros = A.nonZeros();
         impl.pattern_hash     = hash;

@@ -153,10 +153,10 @@ namespace unilateral::lcp
     modify_factor(const std::vector<char> &fixed);
 
     /// Whether the simplicial copy the first update makes fits in half the
-    /// memory the run has left (memory::available). It doubles the factor's memory: a 512 x 512 plate
-    /// (nnz(L) = 3.8e8) peaks at 12 GB with updates and 4.8 GB without
-    /// (143-149 s against 158 s on 24 GB); on a smaller machine it
-    /// refactorises.
+    /// memory the run has left (memory::available). It doubles the factor's
+    /// memory: a 512 x 512 plate (nnz(L) = 3.8e8) peaks at 12 GB with
+    /// updates and 4.8 GB without (143-149 s against 158 s on 24 GB); on a
+    /// smaller machine it refactorises.
     bool
     room_for_modified_copy() const;
 
