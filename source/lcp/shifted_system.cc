@@ -18,6 +18,9 @@ namespace unilateral::lcp
       if (position < 0)
         throw std::logic_error("ShiftedSystem: diagonal missing from pattern "
                                "(call check_and_normalise first)");
+    // One analysis serves every iteration: worth a second ordering where
+    // AMD's is poor.
+    cholesky.try_nested_dissection = true;
   }
 
   bool

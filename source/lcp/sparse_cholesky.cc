@@ -258,6 +258,26 @@ namespace unilateral::lcp
             impl.common.nmethods           = 1;
             impl.common.method[0].ordering = CHOLMOD_AMD;
             impl.factor = cholmod_analyze(&matrix, &impl.common);
+            const double amd_flops = impl.common.fl;
+            const double amd_lnz   = impl.common.lnz;
+            if (try_nested_dissection && impl.factor != nullptr &&
+                amd_flops >= 500 * amd_lnz)
+              {
+                impl.common.method[0].ordering = CHOLMOD_METIS;
+                cholmod_factor *nested =
+                  cholmod_analyze(&matrix, &impl.common);
+                if (nested != nullptr && impl.common.fl < amd_flops)
+                  std::swap(impl.factor, nested);
+                else
+                  {
+                    // Keep AMD's analysis and its statistics.
+                    impl.common.fl  = amd_flops;
+                    impl.common.lnz = amd_lnz;
+                  }
+                if (nested != nullptr)
+                  cholmod_free_factor(&nested, &impl.common);
+                ++counters.symbolic_analyses;
+              }
           }
         else
           {

@@ -7,10 +7,41 @@
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/sparse_cholesky.h>
 
+#include <array>
+
 using namespace test;
 
 namespace
 {
+  // The 7-point Laplacian on a k x k x k grid (Dirichlet): SPD, with the
+  // large separators of a 3D mesh.
+  SparseMatrix
+  laplacian_3d(const Index k)
+  {
+    std::vector<Eigen::Triplet<double>> entries;
+    const auto index = [k](Index i, Index j, Index l) {
+      return (i * k + j) * k + l;
+    };
+    for (Index i = 0; i < k; ++i)
+      for (Index j = 0; j < k; ++j)
+        for (Index l = 0; l < k; ++l)
+          {
+            const Index row = index(i, j, l);
+            entries.emplace_back(row, row, 6.0);
+            for (const auto &[di, dj, dl] :
+                 {std::array<Index, 3>{1, 0, 0}, {0, 1, 0}, {0, 0, 1}})
+              if (i + di < k && j + dj < k && l + dl < k)
+                {
+                  const Index neighbour = index(i + di, j + dj, l + dl);
+                  entries.emplace_back(row, neighbour, -1.0);
+                  entries.emplace_back(neighbour, row, -1.0);
+                }
+          }
+    SparseMatrix A(k * k * k, k * k * k);
+    A.setFromTriplets(entries.begin(), entries.end());
+    return A;
+  }
+
   // A chain of masses on springs: mass 0 rests on a support (u_0 >= 0), the
   // others hang freely (unconstrained) or touch a floor (every third one):
   // A is singular (the chain can translate), the solution unique.
@@ -160,6 +191,39 @@ main()
       std::cout << "  and with 3 more deleted after that: "
                 << yes_no(agrees_with_fresh()) << "\n";
     }
+  // A pattern factorised many times (try_nested_dissection) is analysed a
+  // second time, in METIS's nested dissection, only where AMD leaves large
+  // dense fronts: the 7-point Laplacian on a 25^3 grid (AMD about 600 flops
+  // per entry of L), which METIS orders with fewer flops and which then
+  // solves as AMD's factor does; not the 5-point one on 120 x 120 (AMD
+  // about 40 flops per entry).
+  {
+    const auto compare = [](const SparseMatrix &A, const std::string &name) {
+      const Vector   b = smooth_load(A.rows());
+      Counters       amd_counters, tried_counters;
+      SparseCholesky amd, tried;
+      tried.try_nested_dissection = true;
+      amd.factorise(A, amd_counters);
+      tried.factorise(A, tried_counters);
+      Vector x_amd, x_tried;
+      amd.solve(b, x_amd);
+      tried.solve(b, x_tried);
+      std::cout << name << " with the nested-dissection trial: "
+                << "symbolic analyses " << tried_counters.symbolic_analyses
+                << ", "
+                << (tried.factorisation_flops() < amd.factorisation_flops() ?
+                      "fewer flops than AMD" :
+                      tried.factorisation_flops() ==
+                          amd.factorisation_flops() ?
+                      "AMD's flops" :
+                      "more flops than AMD (wrong)")
+                << ", solves as AMD's factor: "
+                << yes_no(relative_difference(x_tried, x_amd) < 1e-12)
+                << "\n";
+    };
+    compare(laplacian_3d(25), "laplacian_3d(25)");
+    compare(laplacian(120), "laplacian(120)");
+  }
   // A pattern factorised again is permuted once and refactorised from the
   // kept permutation (supernodal factors only): each new set of values on
   // the same pattern solves as a fresh factorisation of it does.
