@@ -73,10 +73,11 @@ namespace unilateral::lcp
       common.print          = 0;
       common.error_handler  = nullptr;
       common.quick_return_if_not_posdef = 1;
-      // Orderings: AMD alone (set per analysis below). Its analysis takes
-      // about 1 s at 0.9 million unknowns where CHOLMOD's default also tries
-      // METIS (5-10 s) for a few percent less fill; one numeric
-      // factorisation costs about 4 s.
+      // Orderings: AMD (set per analysis below). Its analysis takes about
+      // 1 s at 0.9 million unknowns where METIS takes 3-5 s, for a few
+      // percent fewer flops on the stack bond and laminae walls; only a
+      // pattern factorised many times tries METIS too, and only where AMD's
+      // fronts are large (try_nested_dissection).
     }
 
     ~Implementation()
