@@ -162,11 +162,13 @@ namespace unilateral::lcp
      * matrix): when AMD's ordering leaves large dense fronts (at least 500
      * flops per entry of L, the threshold at which CHOLMOD's default
      * strategy considers METIS), also analyse in METIS's nested dissection
-     * and keep the ordering with fewer flops. The running bond's interior-point matrix (m = 225): AMD 31.2
-     * GFlop per factorisation, METIS 12.2 (2.0 against 1.5 s), for 3-4 s of
-     * ordering once; stack bond and laminae stay with AMD (221 and 375 flops
-     * per entry; METIS would not be faster there). Off by default: a pattern
-     * factorised once (A_FF of one active set) cannot repay the ordering.
+     * and keep the ordering with fewer flops (a METIS analysis that fails
+     * leaves AMD's). The running bond's interior-point matrix (m = 225): AMD
+     * 31.2 GFlop per factorisation, METIS 12.2 (2.0 against 1.5 s), for 3-4
+     * s of ordering once; stack bond and laminae stay with AMD (221 and 375
+     * flops per entry; METIS would not be faster there). Off by default: a
+     * pattern factorised once (A_FF of one active set) cannot repay the
+     * ordering.
      */
     bool try_nested_dissection = false;
 
