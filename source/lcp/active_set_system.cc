@@ -64,13 +64,26 @@ namespace unilateral::lcp
     for (Index i = 0; i < fixed_diagonal.size(); ++i)
       if (!(fixed_diagonal[i] > 0))
         fixed_diagonal[i] = mean;
-    if (this->inherited && this->inherited->fixed.size() != std::size_t(A.rows()))
-      this->inherited.reset();
     // A stage after another on the same pattern (the projection after the
-    // regularised solve: A instead of A + eps I) orders it only once.
+    // regularised solve: A instead of A + eps I, or after an interior point)
+    // orders it only once.
     if (this->inherited &&
         this->inherited->ordering_of_A.size() == std::size_t(A.rows()))
       full_ordering = this->inherited->ordering_of_A;
+    // Only a factor of this A's size can precondition (an ordering alone,
+    // or a factor that failed, cannot).
+    if (this->inherited &&
+        (this->inherited->fixed.size() != std::size_t(A.rows()) ||
+         !this->inherited->cholesky.has_factor()))
+      this->inherited.reset();
+  }
+
+  std::shared_ptr<const ActiveSetFactor>
+  ActiveSetFactor::ordering_only(std::vector<Index> ordering_of_A)
+  {
+    auto hint           = std::make_shared<ActiveSetFactor>();
+    hint->ordering_of_A = std::move(ordering_of_A);
+    return hint;
   }
 
   void

@@ -34,6 +34,15 @@ namespace unilateral::lcp
     void
     solve(const DenseMatrix &B, DenseMatrix &X) const;
 
+    /**
+     * No factor, only an ordering of A's pattern for the systems of a later
+     * stage (the projection after an interior-point method, whose matrix
+     * has A's pattern and was ordered once, in METIS's nested dissection
+     * where AMD's fronts are large).
+     */
+    static std::shared_ptr<const ActiveSetFactor>
+    ordering_only(std::vector<Index> ordering_of_A);
+
     /// G = B' K(X)^-1 B for sparse columns B that vanish on X (the Schur
     /// complement's A_FU): SparseCholesky::inverse_gram on the factored
     /// rows. False if that declines; the caller then solves in full.

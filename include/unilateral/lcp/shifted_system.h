@@ -24,6 +24,13 @@ namespace unilateral::lcp
     void
     solve(const Vector &r, Vector &x) const;
 
+    /// The fill-reducing ordering of A's pattern in use (new-to-old).
+    std::vector<Index>
+    ordering() const
+    {
+      return cholesky.ordering();
+    }
+
   private:
     const SparseMatrix &A;
     Counters           &counters;

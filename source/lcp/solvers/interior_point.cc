@@ -41,6 +41,7 @@
  * correctors save a fifth of the factorisations (m = 100: 22 -> 18 from
  * Mehrotra's start, 28 -> 23 from (66)).
  */
+#include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/shifted_system.h>
 #include <unilateral/lcp/solver.h>
 
@@ -325,6 +326,8 @@ namespace unilateral::lcp
         for (Index j = 0; j < n_c; ++j)
           z[problem.constrained[j]] = psi[j] + gap[j];
         solution.u = z;
+        // The projection's systems have A's pattern: order them as here.
+        solution.factor = ActiveSetFactor::ordering_only(newton.ordering());
       }
     };
   } // namespace

@@ -30,6 +30,7 @@
  * on the boundary (the printed rule) makes the next Newton system singular,
  * the "unsolvable Step 4" the paper reports. 1 reproduces the printed rule.
  */
+#include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/shifted_system.h>
 #include <unilateral/lcp/solver.h>
 
@@ -210,6 +211,8 @@ namespace unilateral::lcp
         for (Index k = 0; k < n_c; ++k)
           u[problem.constrained[k]] = problem.lower_bound[k] + slack[k];
         solution.u = scale.cwiseProduct(u);
+        // The projection's systems have A's pattern: order them as here.
+        solution.factor = ActiveSetFactor::ordering_only(newton.ordering());
       }
     };
   } // namespace
