@@ -297,12 +297,16 @@ namespace unilateral::lcp
           impl.factor->is_super ?
             8.0 * static_cast<double>(impl.factor->xsize) :
             (8.0 + sizeof(Index)) * impl.common.lnz;
-        if (factor_bytes > memory::available())
+        try
           {
-            cholmod_free_factor(&impl.factor, &impl.common);
             memory::require(factor_bytes,
                             "the Cholesky factor of a system with " +
                               std::to_string(A.rows()) + " unknowns");
+          }
+        catch (const OutOfMemory &)
+          {
+            cholmod_free_factor(&impl.factor, &impl.common);
+            throw;
           }
         impl.pattern_size     = A.rows();
         impl.pattern_nonzeros = A.nonZeros();
