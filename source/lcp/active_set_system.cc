@@ -1,6 +1,7 @@
 #include <unilateral/base/memory.h>
 #include <unilateral/lcp/active_set_system.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -386,6 +387,27 @@ namespace unilateral::lcp
     return direction;
   }
 
+  unsigned int
+  ActiveSetSystem::cg_iteration_budget(const SparseCholesky &nearby,
+                                       const unsigned int    changes)
+  {
+    if (changes > max_changes)
+      return 0;
+    // The same fixed set (A + eps I for A): CG converges in one or two
+    // iterations, far cheaper than any factorisation.
+    if (changes == 0)
+      return 8;
+    // CG converges in about 2 changes + 1 iterations, each a pair of
+    // triangular solves; do not spend more on it than a factorisation.
+    const double break_even =
+      nearby.factorisation_flops() /
+      (cg_iteration_cost * std::max(nearby.factor_nonzeros(), 1.0));
+    const unsigned int expected = 2 * changes + 2;
+    if (expected > break_even)
+      return 0;
+    return std::min(2 * changes + 8, static_cast<unsigned int>(break_even));
+  }
+
   void
   ActiveSetSystem::solve_with(const ActiveSetFactor &factor,
                               const DenseMatrix     &B,
@@ -544,9 +566,10 @@ namespace unilateral::lcp
         if (nearby != nullptr)
           {
             const unsigned int changes = count_changes(nearby->fixed, fixed);
-            if (changes <= max_changes &&
-                preconditioned_cg(fixed, *nearby, rhs, solution,
-                                  2 * changes + 8))
+            const unsigned int iterations =
+              cg_iteration_budget(nearby->cholesky, changes);
+            if (iterations > 0 &&
+                preconditioned_cg(fixed, *nearby, rhs, solution, iterations))
               {
                 ++counters.reused_factorisations;
                 solved = true;

@@ -76,9 +76,11 @@ namespace unilateral::lcp
    * in at most max_changes indices (K then differs by a matrix of rank
    * <= 2 changes), or
    * an inherited factor of A + eps I for the same X, preconditions conjugate
-   * gradients, which then converge in about 2 changes + 1 iterations. Only
-   * if CG does not reach the direct solver's accuracy in its iteration
-   * budget is K(X) factorised anew. The rule is deterministic.
+   * gradients, which then converge in about 2 changes + 1 iterations, if
+   * those are expected to cost less than a factorisation
+   * (cg_iteration_cost). Only if CG does not reach the direct solver's
+   * accuracy within that break-even count is K(X) factorised anew. The
+   * rule is deterministic.
    */
   class ActiveSetSystem
   {
@@ -131,6 +133,19 @@ namespace unilateral::lcp
     /// Fixed-set changes up to which a factor is reused through CG.
     static constexpr unsigned int max_changes = 16;
 
+    /**
+     * Cost of one preconditioned CG iteration (a pair of triangular solves
+     * and a product with A, memory-bound) in flops of a numeric
+     * factorisation, per entry of L. A nearby factor preconditions CG only
+     * if the expected 2 changes + 2 iterations cost less than factorising
+     * anew, and CG stops at that break-even count. Stack bond m = 225
+     * (A_FF: 7.6 GFlop, 7.0e7 entries of L): one iteration 0.155 s against
+     * 1.0 s for a factorisation with its analysis, i.e. 15 flops per entry;
+     * laminae m = 225 (full pattern, no analysis): 43. With no limit, CG
+     * from a factor 14 changes away ran 26 iterations (4.1 s) and failed.
+     */
+    static constexpr double cg_iteration_cost = 15;
+
     /// Flops of row modifications, as a fraction of those of a numeric
     /// factorisation, up to which a factor is updated rather than
     /// recomputed. Modifications run simplicial and memory-bound at 2-5
@@ -174,14 +189,19 @@ namespace unilateral::lcp
     apply(const std::vector<char> &fixed, const DenseMatrix &Y,
           DenseMatrix &KY) const;
 
-    /// Preconditioned CG on K(X) X = B with @p preconditioner; true if
-    /// every column reached the tolerance within @p max_iterations.
+    /// CG iterations allowed with the factor of a fixed set @p changes
+    /// indices away, 0 if factorising anew is expected to be cheaper.
+    static unsigned int
+    cg_iteration_budget(const SparseCholesky &nearby, unsigned int changes);
+
     /// Solve with @p factor, counting the triangular solves.
     void
     solve_with(const ActiveSetFactor &factor,
                const DenseMatrix     &B,
                DenseMatrix           &X) const;
 
+    /// Preconditioned CG on K(X) X = B with @p preconditioner; true if
+    /// every column reached the tolerance within @p max_iterations.
     bool
     preconditioned_cg(const std::vector<char> &fixed,
                       const ActiveSetFactor   &preconditioner,
