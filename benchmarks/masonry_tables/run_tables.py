@@ -7,6 +7,7 @@ the paper's numbers, and the m = 225 scale runs.
 Runs the executable on generated parameter files (one run per table cell),
 reads each run's summary.json and the peak memory from /usr/bin/time -v, and
 writes into benchmarks/results/masonry_tables/:
+    (a --relative-gap G adds _gapG to every name below)
     tables.csv    one row per run: our n_b, n, n_c, status, iterations,
                   seconds (solver and end to end), peak memory, and the
                   paper's n_b, n, n_c and CPU seconds
@@ -107,7 +108,8 @@ end
 def run(executable, runs_directory, geometry, m, solver, schur, write_vtu,
         timeout, relative_gap=None):
     name = (f"{geometry.replace(' ', '_')}_m{m}_{solver}"
-            f"{'_sc' if schur else ''}{'_vtu' if write_vtu else ''}")
+            f"{'_sc' if schur else ''}{'_vtu' if write_vtu else ''}"
+            f"{gap_tag(relative_gap)}")
     prm = os.path.join(runs_directory, name + ".prm")
     with open(prm, "w") as f:
         f.write(parameter_file(geometry, m, solver, schur, write_vtu,
@@ -134,6 +136,17 @@ def run(executable, runs_directory, geometry, m, solver, schur, write_vtu,
     return result
 
 
+def gap_tag(relative_gap):
+    """Suffix of run and result names for a gap other than the default, so
+    that runs with different gaps do not overwrite each other."""
+    return "" if relative_gap is None else f"_gap{relative_gap:g}"
+
+
+def gap_heading(relative_gap):
+    return ("g = H/2 (the default)" if relative_gap is None else
+            f"g = {relative_gap:g} H")
+
+
 def solver_seconds(summary):
     """The solver's own time: everything inside the 'solve' section."""
     return summary["time"].get("solve", float("nan"))
@@ -147,14 +160,25 @@ def setup_seconds(summary):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--tables", default="1,3,4,5,6,7")
-    parser.add_argument("--max-m", type=int, default=225)
-    parser.add_argument("--geometries", default=",".join(GEOMETRIES))
-    parser.add_argument("--timeout", type=float, default=1800)
-    parser.add_argument("--scale", action="store_true")
-    parser.add_argument("--relative-gap", type=float, default=None)
+    parser.add_argument(
+        "--tables", default="1,3,4,5,6,7",
+        help="which tables, comma separated (1 means Tables 1 and 2 from the "
+             "PDAS runs, which Table 5 also uses); empty for none")
+    parser.add_argument("--max-m", type=int, default=225,
+                        help="largest m (blocks per side) to run")
+    parser.add_argument("--geometries", default=",".join(GEOMETRIES),
+                        help="comma separated subset of the geometries")
+    parser.add_argument("--timeout", type=float, default=1800,
+                        help="seconds per run; a longer run is recorded as "
+                             "'timeout'")
+    parser.add_argument("--scale", action="store_true",
+                        help="also the m = 225 scale runs (PDAS, PDPC, "
+                             "interior point), timed stage by stage")
+    parser.add_argument("--relative-gap", type=float, default=None,
+                        help="g / H (default: the parameter's default, 0.5)")
     parser.add_argument("--executable",
-                        default=os.path.join(ROOT, "build", "unilateral"))
+                        default=os.path.join(ROOT, "build", "unilateral"),
+                        help="the unilateral executable to run")
     arguments = parser.parse_args()
     tables = [int(t) for t in arguments.tables.split(",") if t]
     geometries = [g.strip() for g in arguments.geometries.split(",")]
@@ -215,7 +239,8 @@ def main():
                 rows.append(row)
                 # Written after every run, so a long run can be watched and
                 # an interrupted one keeps what it measured.
-                write_tables(results_directory, rows, tables)
+                write_tables(results_directory, rows, tables,
+                             arguments.relative_gap)
                 print(f"table {table} {row['solver']:>14} {geometry:>12} "
                       f"m = {m:3}: {row['status']}, "
                       f"{row.get('solver_seconds', '-')} s "
@@ -228,7 +253,8 @@ def main():
                              225, solver, False, True, arguments.timeout,
                              arguments.relative_gap)
                 scale_rows.append((solver, geometry, result))
-                write_scale(results_directory, scale_rows)
+                write_scale(results_directory, scale_rows,
+                            arguments.relative_gap)
                 print(f"scale {solver} {geometry}: {result['status']}, "
                       f"{result['wall']:.1f} s, "
                       f"{result.get('peak_mb', 0) or 0:.0f} MB", flush=True)
@@ -240,14 +266,17 @@ FIELDS = ["table", "solver", "geometry", "m", "n_b", "paper_n_b", "n",
           "setup_seconds", "wall_seconds", "peak_mb", "kkt", "energy"]
 
 
-def write_tables(directory, rows, tables):
-    with open(os.path.join(directory, "tables.csv"), "w", newline="") as f:
+def write_tables(directory, rows, tables, relative_gap):
+    tag = gap_tag(relative_gap)
+    with open(os.path.join(directory, f"tables{tag}.csv"), "w",
+              newline="") as f:
         writer = csv.DictWriter(f, fieldnames=FIELDS)
         writer.writeheader()
         for row in rows:
             writer.writerow({k: row.get(k, "") for k in FIELDS})
 
-    lines = ["# Ainsworth & Mihai (2006), Tables 1-7: ours beside the paper",
+    lines = ["# Ainsworth & Mihai (2006), Tables 1-7: ours beside the paper, "
+             f"{gap_heading(relative_gap)}",
              "",
              "Generated by `benchmarks/masonry_tables/run_tables.py`. Seconds:"
              " ours = wall time of the solve stage (regularised solve, "
@@ -296,7 +325,7 @@ def write_tables(directory, rows, tables):
                     cells += [ours, r["paper_seconds"]]
                 lines.append(f"| {solver} | {m} | " + " | ".join(cells) + " |")
         lines.append("")
-    with open(os.path.join(directory, "tables.md"), "w") as f:
+    with open(os.path.join(directory, f"tables{tag}.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
 
 
@@ -305,13 +334,16 @@ STAGES = ["make grid", "distribute DOFs", "contact detection",
           "recover solution", "output"]
 
 
-def write_scale(directory, scale_rows):
+def write_scale(directory, scale_rows, relative_gap):
+    tag = gap_tag(relative_gap)
     fields = ["solver", "geometry", "status", "n", "n_c", "iterations",
               "projection_iterations"] + STAGES + ["wall_seconds", "peak_mb"]
-    with open(os.path.join(directory, "scale.csv"), "w", newline="") as f:
+    with open(os.path.join(directory, f"scale{tag}.csv"), "w",
+              newline="") as f:
         writer = csv.DictWriter(f, fieldnames=fields)
         writer.writeheader()
-        lines = ["# m = 225, end to end (VTU on)", "",
+        lines = [f"# m = 225, end to end (VTU on), "
+                 f"{gap_heading(relative_gap)}", "",
                  "| solver | geometry | n | n_c | status | iter | " +
                  " | ".join(STAGES) + " | total wall s | peak MB |",
                  "|" + "---|" * (8 + len(STAGES))]
@@ -337,7 +369,7 @@ def write_scale(directory, scale_rows):
                 f"{row['projection_iterations']} | " +
                 " | ".join(row[s] for s in STAGES) +
                 f" | {row['wall_seconds']} | {row['peak_mb']} |")
-    with open(os.path.join(directory, "scale.md"), "w") as f:
+    with open(os.path.join(directory, f"scale{tag}.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
 
 
