@@ -17,16 +17,7 @@ writes into benchmarks/results/masonry_tables/:
                   stage and peak memory (with --scale)
     runs/         the parameter files and summaries of every run
 
-Options:
-    --tables 1,3,4,5,6,7   which tables (1 means Tables 1 and 2 from the
-                           PDAS runs, which Table 5 also uses)
-    --max-m M              largest m (default 225)
-    --geometries ...       comma separated subset
-    --timeout S            per run, seconds (default 1800); a run that
-                           exceeds it is recorded as "timeout"
-    --scale                also the m = 225 scale runs
-    --relative-gap G       g / H (default: the parameter's default, 0.5)
-    --executable PATH      default build/unilateral of this repository
+Options: --help (each is described there).
 """
 import argparse
 import csv
