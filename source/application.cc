@@ -31,6 +31,7 @@ namespace unilateral
       "too large for the memory), 2 the solver did not converge (its status\n"
       "is in summary.json).\n";
 
+    // The default scene: the masonry wall, the program's first use.
     std::string
     default_scene()
     {
@@ -40,8 +41,10 @@ namespace unilateral
       return SceneRegistry::all().front().name;
     }
 
+    // Every parameter; the solver methods' own are bound to @p solver.
     void
-    declare_parameters(dealii::ParameterHandler &prm)
+    declare_parameters(dealii::ParameterHandler &prm,
+                       lcp::SolverParameters    &solver)
     {
       prm.declare_entry("Scene",
                         default_scene(),
@@ -101,7 +104,7 @@ namespace unilateral
                           "Print a line per solver iteration.");
       }
       prm.leave_subsection();
-      lcp::SolverParameters::declare_parameters(prm);
+      solver.declare_parameters(prm);
       for (const auto &scene : SceneRegistry::all())
         scene.declare_parameters(prm);
     }
@@ -110,7 +113,8 @@ namespace unilateral
     print_parameters(const std::string &format, std::ostream &out)
     {
       dealii::ParameterHandler prm;
-      declare_parameters(prm);
+      lcp::SolverParameters    solver;
+      declare_parameters(prm, solver);
       if (format == "json")
         prm.print_parameters(out, dealii::ParameterHandler::JSON);
       else if (format == "prm")
@@ -129,14 +133,14 @@ namespace unilateral
       if (!std::filesystem::is_regular_file(parameter_file))
         throw InputError("cannot read parameter file '" + parameter_file +
                          "': no such file");
+      RunContext               context;
       dealii::ParameterHandler prm;
-      declare_parameters(prm);
+      declare_parameters(prm, context.solver);
       prm.parse_input(parameter_file);
 
       const SceneInfo &scene_info = SceneRegistry::get(prm.get("Scene"));
       memory::set_limit(1e9 * prm.get_double("Memory limit"));
 
-      RunContext context;
       context.parameter_file = parameter_file;
       prm.enter_subsection("Output");
       const std::string directory = prm.get("Directory");
@@ -151,9 +155,6 @@ namespace unilateral
       const bool progress   = prm.get_bool("Progress");
       prm.leave_subsection();
       context.solver.parse_parameters(prm);
-      // Unknown method names cannot pass the Selection pattern, but check
-      // anyway: the registry gives the better message.
-      lcp::SolverRegistry::get(context.solver.method);
 
       std::unique_ptr<Scene> scene = scene_info.create(prm);
 

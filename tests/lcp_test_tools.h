@@ -3,7 +3,10 @@
 #pragma once
 
 #include <unilateral/lcp/problem.h>
+#include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/lcp/solver.h>
+
+#include "registered_methods.h"
 
 #include <Eigen/Dense>
 
@@ -17,36 +20,20 @@ namespace test
 {
   using namespace unilateral::lcp;
 
-  // A method with its options, as a user would select it.
-  struct Method
-  {
-    std::string name;
-    bool        schur_complement    = false;
-    bool        predictor_corrector = false; ///< interior_point's variant
-    std::string label() const
-    {
-      return name + (schur_complement ? "_sc" : "") +
-             (predictor_corrector ? "_pc" : "");
-    }
-  };
+  using Method = registered_methods::MethodRun;
 
-  // Every method of both papers: the full LCP ones, the Schur-complement
-  // ones Ainsworth & Mihai run (graves, lssnn, pdas, pdpc), and the plate's.
+  // Every registered method and variant (registered_methods.h).
   inline std::vector<Method>
   all_methods(const bool has_unconstrained)
   {
-    std::vector<Method> methods = {{"psor"},
-                                   {"lssnn"},
-                                   {"pdas"},
-                                   {"pdpc"},
-                                   {"interior_point"},
-                                   {"interior_point", false, true},
-                                   {"block_pivoting"},
-                                   {"graves", has_unconstrained},
-                                   {"lssnn", true},
-                                   {"pdas", true},
-                                   {"pdpc", true}};
-    return methods;
+    return registered_methods::all(has_unconstrained);
+  }
+
+  /// The registered method @p name with its default options.
+  inline Method
+  method(const std::string &name)
+  {
+    return {&SolverRegistry::get(name)};
   }
 
   inline Problem
@@ -71,12 +58,10 @@ namespace test
              double         regularisation = -1,
              SolverParameters parameters    = SolverParameters())
   {
-    parameters.method           = method.name;
-    parameters.schur_complement = method.schur_complement;
-    parameters.regularisation   = regularisation;
-    parameters.interior_point.predictor_corrector = method.predictor_corrector;
-    Solution solution;
-    const Report report = solve_lcp(problem, parameters, solution, nullptr, 0);
+    method.apply(parameters);
+    parameters.regularisation = regularisation;
+    Solution     solution;
+    const Report report = solve_lcp(problem, parameters, solution);
     u                   = solution.u;
     return report;
   }

@@ -238,7 +238,7 @@ def run_ours(method, directory, runs, repeats):
         os.remove(summary_file)
         phases = summary["time"].get("solver", {})
         solve = sum(v for k, v in phases.items() if k != "kkt check")
-        total = summary["time"].get("read LCP", 0) + summary["time"]["solve"]
+        total = summary["time"].get("assemble system", 0) + summary["time"]["solve"]
         result = {"solver": "unilateral " + method,
                   "status": summary["status"],
                   "converged": summary["converged"],

@@ -145,8 +145,7 @@ def solver_seconds(summary):
 
 def setup_seconds(summary):
     return sum(summary["time"].get(k, 0.0) for k in
-               ("make grid", "distribute DOFs", "contact detection",
-                "change of variables", "assembly", "check LCP"))
+               ("make grid", "setup system", "assemble system"))
 
 
 def main():
@@ -320,9 +319,8 @@ def write_tables(directory, rows, tables, relative_gap):
         f.write("\n".join(lines) + "\n")
 
 
-STAGES = ["make grid", "distribute DOFs", "contact detection",
-          "change of variables", "assembly", "check LCP", "solve",
-          "recover solution", "output"]
+STAGES = ["make grid", "setup system", "assemble system", "solve",
+          "postprocess", "output results"]
 
 
 def write_scale(directory, scale_rows, relative_gap):

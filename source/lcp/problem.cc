@@ -1,6 +1,5 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/lcp/problem.h>
-#include <unilateral/lcp/report.h>
 
 #include <algorithm>
 #include <cmath>
@@ -248,45 +247,5 @@ namespace unilateral::lcp
     result.dual_feasibility /= force_scale;
     result.complementarity /= force_scale;
     return result;
-  }
-
-  std::string
-  to_string(const Status status)
-  {
-    switch (status)
-      {
-        case Status::converged:
-          return "converged";
-        case Status::iteration_limit:
-          return "iteration limit";
-        case Status::infeasible:
-          return "infeasible";
-        case Status::singular:
-          return "singular";
-        case Status::inaccurate:
-          return "inaccurate";
-      }
-    return "unknown";
-  }
-
-  void
-  Report::add_time(const std::string &phase, const double seconds)
-  {
-    for (auto &entry : phase_times)
-      if (entry.first == phase)
-        {
-          entry.second += seconds;
-          return;
-        }
-    phase_times.emplace_back(phase, seconds);
-  }
-
-  double
-  Report::total_time() const
-  {
-    double total = 0;
-    for (const auto &entry : phase_times)
-      total += entry.second;
-    return total;
   }
 } // namespace unilateral::lcp

@@ -61,6 +61,8 @@ namespace unilateral::lcp
     for (Index k = 0; k < n_c; ++k)
       reduced.constrained[k] = k;
     reduced.lower_bound = problem.lower_bound;
+    // The same constraints, so what the builder knew of them holds.
+    reduced.mostly_active = problem.mostly_active;
     check_and_normalise(reduced);
   }
 

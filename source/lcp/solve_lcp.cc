@@ -1,339 +1,131 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/lcp/projection.h>
 #include <unilateral/lcp/schur_complement.h>
-#include <unilateral/lcp/solver.h>
+#include <unilateral/lcp/solve_lcp.h>
 
 #include <algorithm>
 #include <iomanip>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
 namespace unilateral::lcp
 {
-  std::vector<SolverInfo> &
-  SolverRegistry::entries()
-  {
-    static std::vector<SolverInfo> registered;
-    return registered;
-  }
-
-  bool
-  SolverRegistry::add(SolverInfo info)
-  {
-    entries().push_back(std::move(info));
-    return true;
-  }
-
-  const SolverInfo &
-  SolverRegistry::get(const std::string &name)
-  {
-    for (const auto &info : entries())
-      if (info.name == name)
-        return info;
-    throw InputError("parameter 'Solver/Method' = " + name +
-                     ": unknown method; choose one of " + selection());
-  }
-
-  std::vector<std::string>
-  SolverRegistry::names()
-  {
-    std::vector<std::string> result;
-    for (const auto &info : entries())
-      result.push_back(info.name);
-    return result;
-  }
-
-  std::string
-  SolverRegistry::selection()
-  {
-    std::string result;
-    for (const auto &info : entries())
-      result += (result.empty() ? "" : "|") + info.name;
-    return result;
-  }
-
-  std::string
-  SolverRegistry::documentation()
-  {
-    std::string result;
-    for (const auto &info : entries())
-      result += "  " + info.name + ": " + info.description + "\n";
-    return result;
-  }
-
   namespace
   {
-    void
-    merge_counters(Counters &into, const Counters &from)
-    {
-      into.orderings += from.orderings;
-      into.symbolic_analyses += from.symbolic_analyses;
-      into.numeric_factorisations += from.numeric_factorisations;
-      into.reused_factorisations += from.reused_factorisations;
-      into.modified_factorisations += from.modified_factorisations;
-      into.factor_row_modifications += from.factor_row_modifications;
-      into.resolved_subsets += from.resolved_subsets;
-      into.resolved_indices += from.resolved_indices;
-      into.cg_iterations += from.cg_iterations;
-      into.triangular_solves += from.triangular_solves;
-      into.partial_forward_solves += from.partial_forward_solves;
-      into.centrality_correctors += from.centrality_correctors;
-      into.matrix_vector_products += from.matrix_vector_products;
-    }
-
-    void
-    merge_times(Report &into, const Report &from, const std::string &prefix)
-    {
-      for (const auto &[phase, seconds] : from.phase_times)
-        into.add_time(prefix + phase, seconds);
-    }
-
-    Report
-    solve_full(const Problem          &problem,
-               const SolverParameters &parameters,
-               Solution               &solution,
-               std::ostream           *progress,
-               double                  auto_regularisation);
-
-    // Another method as a user would run it, regularised if need be and
-    // projected, for the checks and continuations below.
-    Report
-    solve_full_with(const std::string      &method,
-                    const Problem          &problem,
-                    const SolverParameters &parameters,
-                    Solution               &solution,
-                    std::ostream           *progress,
-                    const double            auto_regularisation)
-    {
-      SolverParameters method_parameters = parameters;
-      method_parameters.method           = method;
-      method_parameters.projection       = true;
-      solution                           = Solution();
-      return solve_full(
-        problem, method_parameters, solution, progress, auto_regularisation);
-    }
+    /// 'Regularisation = auto' on a problem whose bodies can float, and the
+    /// retry of a method that met a singular matrix where none was expected.
+    constexpr double floating_bodies_regularisation = 1e-9;
 
     /**
-     * A claim that the LCP has no solution is checked with PDAS, which
-     * never makes one (it ends singular or at its limit instead). Graves
-     * can enter its Case 2 through round-off, as Ainsworth & Mihai report:
-     * running bond, m = 5, without load, where u = 0 solves it. If PDAS
-     * solves the LCP, its answer is given and the note says why.
+     * A method with its options, run as a user would run it: regularised if
+     * it needs a definite matrix, projected if its answer is approximate.
      */
+    struct Attempt
+    {
+      const SolverInfo *method;
+      SolverParameters  parameters;
+      /// The relative eps 'Regularisation = auto' means for this attempt.
+      double auto_regularisation;
+    };
+
+    // The method alone on @p problem as given.
     void
-    check_infeasibility_claim(const Problem          &problem,
-                              const SolverParameters &parameters,
-                              Solution               &solution,
-                              Report                 &report,
-                              std::ostream           *progress,
-                              const double            auto_regularisation)
+    run_method(const Attempt &attempt,
+               const Problem &problem,
+               Solution      &solution,
+               Report        &report,
+               std::ostream  *progress)
     {
-      Solution     check;
-      const Report check_report = solve_full_with(
-        "pdas", problem, parameters, check, progress, auto_regularisation);
-      merge_counters(report.counters, check_report.counters);
-      merge_times(report, check_report, "infeasibility check: ");
-      if (!check_report.converged() ||
-          !(kkt_residuals(problem, check.u).max() <= parameters.kkt_tolerance))
-        {
-          report.message += "; PDAS found none either (" +
-                            to_string(check_report.status) + ")";
-          return;
-        }
-      report.message += "; but PDAS solved it in " +
-                        std::to_string(check_report.iterations +
-                                       check_report.projection_iterations) +
-                        " iterations, so the claim came from round-off: the "
-                        "answer given is PDAS's";
-      report.status = Status::converged;
-      solution      = check;
-    }
-
-    /**
-     * PDAS that cycles hands over to the interior point of Fernandes et
-     * al., which converges whatever the start (in fewer iterations than
-     * PDPC: 45 against 63 on the m = 100 running bond wall), then the
-     * projection from its answer, which is PDAS again but near the
-     * solution. The running bond walls need it from m = 30 on (g = H/2).
-     * The answer is exact or the failure is reported; the note says what
-     * happened.
-     */
-    Report
-    continue_from_interior_point(const Problem          &problem,
-                                 const SolverParameters &parameters,
-                                 Solution               &solution,
-                                 const Report           &pdas_report,
-                                 std::ostream           *progress,
-                                 const double            auto_regularisation)
-    {
-      if (progress != nullptr)
-        *progress << "    " << pdas_report.message
-                  << "; continuing from the interior point"
-                  << std::endl;
-      SolverParameters interior_parameters = parameters;
-      interior_parameters.interior_point.predictor_corrector = true;
-      Report report = solve_full_with(
-        "interior_point", problem, interior_parameters, solution, progress,
-        auto_regularisation);
-      report.solver = pdas_report.solver;
-      report.iterations += pdas_report.iterations;
-      merge_counters(report.counters, pdas_report.counters);
-      merge_times(report, pdas_report, "pdas (cycled): ");
-      const std::string note = pdas_report.message + " after " +
-                               std::to_string(pdas_report.iterations) +
-                               " iterations; continued from the interior "
-                               "point's answer";
-      report.message =
-        report.message.empty() ? note : note + "; " + report.message;
-      return report;
-    }
-
-    /**
-     * The first active set of the projection after an interior-point
-     * method. Its iterate lies strictly inside, with slack s and multiplier
-     * lambda both small on the indices that are nearly complementary. PDAS's
-     * test s - tau lambda < 0 mixes their units, and on the running bond
-     * walls it called open a few closed contacts that carry almost no force
-     * (slack 5e-8, lambda 1e-5) but hold a brick against rotation: the first
-     * system was singular. Compared in units of their own size, s / |s| <
-     * lambda / |lambda| (Tapia's indicators, scale-free), it errs towards
-     * closing contacts, which the next test reopens safely.
-     */
-    std::vector<Index>
-    interior_point_active_set(const Problem &problem, const Vector &u)
-    {
-      const Vector lambda = multiplier(problem, u);
-      double       slack_size = 0, lambda_size = 0;
-      for (Index k = 0; k < problem.n_constrained(); ++k)
-        {
-          const Index i = problem.constrained[k];
-          slack_size = std::max(slack_size, u[i] - problem.lower_bound[k]);
-          lambda_size = std::max(lambda_size, lambda[i]);
-        }
-      std::vector<Index> active;
-      for (Index k = 0; k < problem.n_constrained(); ++k)
-        {
-          const Index i = problem.constrained[k];
-          if ((u[i] - problem.lower_bound[k]) * lambda_size <=
-              lambda[i] * slack_size)
-            active.push_back(i);
-        }
-      return active;
-    }
-
-    // The method alone on the problem as given (no regularisation).
-    void
-    run_method(const SolverInfo       &info,
-               const Problem          &problem,
-               const SolverParameters &parameters,
-               Solution               &solution,
-               Report                 &report,
-               std::ostream           *progress)
-    {
-      if (info.dense &&
-          static_cast<unsigned int>(problem.size()) > parameters.max_dense_size)
+      const SolverInfo &info = *attempt.method;
+      if (info.dense && static_cast<unsigned int>(problem.size()) >
+                          attempt.parameters.max_dense_size)
         throw InputError(
           "method '" + info.name + "' is dense and the LCP has " +
           std::to_string(problem.size()) +
           " unknowns, more than 'Solver/Maximum dense size' = " +
-          std::to_string(parameters.max_dense_size) +
-          ": use 'Schur complement = true' (graves works on S only) or a "
-          "sparse method");
-      auto solver = info.create(parameters);
-      solver->solve(problem, solution, report, progress);
+          std::to_string(attempt.parameters.max_dense_size) +
+          ": use 'Schur complement = true' (" + info.name +
+          " works on S only) or a sparse method");
+      PhaseTimer timer(report, "solve");
+      info.create(attempt.parameters, attempt.parameters.of(info.name))
+        ->solve(problem, solution, report, progress);
     }
 
-    Report
-    solve_full(const Problem          &problem,
-               const SolverParameters &parameters,
-               Solution               &solution,
-               std::ostream           *progress,
-               const double            auto_regularisation)
+    // The regularisation the attempt's method gets (relative eps, 0: none):
+    // 'auto' is the problem's need, raised to the method's own preference
+    // (PSOR converges at a rate set by eps; the projection makes the answer
+    // exact anyway).
+    double
+    relative_regularisation(const Attempt &attempt)
     {
-      const SolverInfo &info = SolverRegistry::get(parameters.method);
-      Report            report;
-      report.solver = info.name;
+      const SolverInfo &info = *attempt.method;
+      if (!info.needs_definite_matrix)
+        return 0;
+      if (attempt.parameters.regularisation >= 0)
+        return attempt.parameters.regularisation;
+      return attempt.auto_regularisation > 0 ?
+               std::max(attempt.auto_regularisation,
+                        info.preferred_regularisation) :
+               0.0;
+    }
 
-      // 'auto': the scene's value, raised to the method's own preference
-      // when the scene needs regularisation at all (PSOR converges at a rate
-      // set by eps; the projection makes the answer exact anyway).
-      const double relative_eps =
-        parameters.regularisation >= 0 ?
-          parameters.regularisation :
-          (auto_regularisation > 0 ?
-             std::max(auto_regularisation, info.preferred_regularisation) :
-             0.0);
-      const bool regularise = info.needs_definite_matrix && relative_eps > 0;
+    /// What an attempt ended with.
+    struct Outcome
+    {
+      Report report;
+      /// The status of the method's own run, before any projection: what
+      /// follow-ups are chosen by.
+      Status method_status;
+    };
 
-      // Stage 1: the method, on A + eps d I if it needs a definite matrix.
+    /**
+     * One attempt: the method on A (or on A + eps d I if it needs a definite
+     * matrix), then the projection step where its answer is approximate or
+     * regularised, or fails the KKT check.
+     */
+    Outcome
+    run_attempt(const Problem &problem,
+                const Attempt &attempt,
+                Solution      &solution,
+                std::ostream  *progress)
+    {
+      const SolverInfo       &info       = *attempt.method;
+      const SolverParameters &parameters = attempt.parameters;
+      Outcome                 outcome;
+      Report                 &report = outcome.report;
+      report.solver                   = info.name;
+
+      const double relative_eps = relative_regularisation(attempt);
+      const bool   regularise   = relative_eps > 0;
+      const double mean_diagonal =
+        problem.size() > 0 && problem.A.diagonal().mean() > 0 ?
+          problem.A.diagonal().mean() :
+          1.0;
       if (!regularise)
-        {
-          const Solution start = solution;
-          {
-            PhaseTimer timer(report, "solve");
-            run_method(info, problem, parameters, solution, report, progress);
-          }
-          if (report.status == Status::singular &&
-              info.needs_definite_matrix && parameters.regularisation < 0 &&
-              auto_regularisation == 0)
-            {
-              // 'auto' on a scene that expected A to be definite, but it is
-              // not (an LCP read from files, from masonry: floating
-              // blocks): regularise after all, as the masonry scene does
-              // (1e-9), and project. The failed attempt's time and work
-              // stay in the report.
-              if (progress != nullptr)
-                *progress << "    " << report.message
-                          << "; regularising with eps = 1e-9 (auto)"
-                          << std::endl;
-              solution           = start;
-              Report regularised = solve_full(
-                problem, parameters, solution, progress, 1e-9);
-              merge_counters(regularised.counters, report.counters);
-              merge_times(regularised, report, "");
-              return regularised;
-            }
-          if (report.status == Status::singular && info.needs_definite_matrix)
-            report.message += "; regularise ('Solver/Regularisation' > 0)";
-          if (report.status == Status::infeasible && info.name != "pdas")
-            check_infeasibility_claim(problem,
-                                      parameters,
-                                      solution,
-                                      report,
-                                      progress,
-                                      auto_regularisation);
-        }
+        run_method(attempt, problem, solution, report, progress);
       else
         {
           Problem regularised;
           {
             PhaseTimer timer(report, "regularise");
-            regularised = problem;
-            const double mean_diagonal =
-              problem.size() > 0 ? problem.A.diagonal().mean() : 1.0;
-            report.regularisation =
-              relative_eps * (mean_diagonal > 0 ? mean_diagonal : 1.0);
+            regularised           = problem;
+            report.regularisation = relative_eps * mean_diagonal;
             for (Index j = 0; j < regularised.size(); ++j)
               regularised.A.coeffRef(j, j) += report.regularisation;
           }
-          PhaseTimer timer(report, "solve");
-          run_method(info, regularised, parameters, solution, report, progress);
+          run_method(attempt, regularised, solution, report, progress);
         }
-      if (info.name == "pdas" && report.status == Status::iteration_limit &&
-          parameters.max_iterations == 0)
-        return continue_from_interior_point(problem,
-                                            parameters,
-                                            solution,
-                                            report,
-                                            progress,
-                                            auto_regularisation);
+      outcome.method_status = report.status;
+
       if (regularise && !parameters.projection && report.converged())
         {
-          // A small KKT residual of the answer to A + eps I against A bounds
-          // the backward error only; nearly floating bodies turn it into a
-          // forward error 1e4 times larger (laminae m = 10, eps = 1e-8: KKT
-          // 2.6e-9, displacement 8e-5 off). Not the user's problem solved.
+          // A small KKT residual of the answer to A + eps I against A
+          // bounds the backward error only; nearly floating bodies turn it
+          // into a forward error 1e4 times larger. Not the user's problem
+          // solved.
           std::ostringstream message;
           message << std::setprecision(3)
                   << "the answer solves the regularised LCP (A + eps I, eps = "
@@ -347,96 +139,323 @@ namespace unilateral::lcp
       // An exact method on A itself needs no projection, unless its answer
       // fails the KKT check: pivoting methods with an absolute tolerance
       // (block pivoting's 1e-6) can stop a few indices short on large
-      // plates (n1 = 64: KKT 2e-6). PDAS from there finishes the job.
+      // plates.
       const bool exact_answer =
         info.exact && !regularise && report.converged() &&
         solution.u.size() == problem.size() &&
         kkt_residuals(problem, solution.u).max() <= parameters.kkt_tolerance;
       if (!report.converged() || !parameters.projection || exact_answer)
-        return report;
+        return outcome;
 
-      // Stage 2: the projection, PDAS on A from the approximate solution.
-      // If u_eps is far from the answer (a large eps), PDAS on A may meet an
-      // active set that leaves a body unsupported (a singular system) or
-      // wander without settling. Then continue in eps: PDAS on A + eps_k d I
-      // with eps_k falling by 1e3 per stage, each warm-started from the
-      // last, and A again after each stage. A projection that has not
-      // settled in 50 iterations counts as wandering while a stage is left.
-      auto projection_timer =
-        std::make_unique<PhaseTimer>(report, "projection");
-      const double mean_diagonal =
-        problem.size() > 0 && problem.A.diagonal().mean() > 0 ?
-          problem.A.diagonal().mean() :
-          1.0;
       // A method that ran on A itself (pdpc, interior_point) continues from
-      // the scene's regularisation.
-      double eps_k = regularise ? report.regularisation :
-                                  1e3 * std::max(auto_regularisation, 1e-12) *
-                                    mean_diagonal;
-      const double     last_eps = 1e-14 * mean_diagonal;
-      SolverParameters projection_parameters = parameters;
-      Solution         start                 = solution;
-      start.active_set.clear(); // the test on u_eps decides, not a hint
-      if (!regularise && !info.exact)
-        start.active_set = interior_point_active_set(problem, solution.u);
-      Report           projection;
-      for (;;)
+      // the problem's regularisation.
+      const double first_eps =
+        regularise ? report.regularisation :
+                     1e3 * std::max(attempt.auto_regularisation, 1e-12) *
+                       mean_diagonal;
+      project(problem,
+              parameters,
+              first_eps,
+              !regularise && !info.exact,
+              solution,
+              report,
+              progress);
+      return outcome;
+    }
+
+    // The follow-up of @p kind that @p info declares for @p status.
+    const FollowUp *
+    declared_follow_up(const SolverInfo       &info,
+                       const SolverParameters &parameters,
+                       const Status            status,
+                       const FollowUp::Kind    kind)
+    {
+      for (const FollowUp &follow_up : info.follow_ups)
+        if (follow_up.kind == kind && follow_up.when == status &&
+            !(follow_up.only_at_default_limit && parameters.max_iterations > 0))
+          return &follow_up;
+      return nullptr;
+    }
+
+    // The attempt a follow-up asks for.
+    Attempt
+    follow_up_attempt(const FollowUp &follow_up, const Attempt &from)
+    {
+      Attempt next{&SolverRegistry::get(follow_up.method),
+                   from.parameters,
+                   from.auto_regularisation};
+      next.parameters.method     = follow_up.method;
+      next.parameters.projection = true;
+      for (const auto &[entry, value] : follow_up.settings)
+        next.parameters.set(entry, value);
+      return next;
+    }
+
+    /**
+     * The attempt that continues @p attempt after its @p outcome, if any,
+     * with the progress line that says why:
+     *  - a method that needs a definite matrix and meets a singular one on
+     *    a problem expected definite ('auto' without floating bodies: an LCP
+     *    read from files) is tried again regularised, as on floating
+     *    bodies; this follows from the property, so no method declares it;
+     *  - a hand-over the method declares.
+     */
+    std::optional<Attempt>
+    next_attempt(const Attempt &attempt,
+                 const Outcome &outcome,
+                 std::ostream  *progress)
+    {
+      if (outcome.method_status == Status::singular &&
+          relative_regularisation(attempt) == 0 &&
+          attempt.method->needs_definite_matrix &&
+          attempt.parameters.regularisation < 0 &&
+          attempt.auto_regularisation == 0)
         {
-          const bool stage_left = eps_k * 1e-3 >= last_eps;
-          projection_parameters.max_iterations =
-            !stage_left                    ? parameters.max_iterations :
-            parameters.max_iterations > 0 ? std::min(parameters.max_iterations, 50u) :
-                                            50u;
-          projection = Report();
-          solution   = start;
-          run_method(SolverRegistry::get("pdas"),
-                     problem,
-                     projection_parameters,
-                     solution,
-                     projection,
-                     progress);
-          report.projection_iterations += projection.iterations;
-          merge_counters(report.counters, projection.counters);
-          if (projection.converged() || !stage_left)
-            break;
-          eps_k *= 1e-3;
           if (progress != nullptr)
-            *progress << "    projection: " << projection.message
-                      << "; continuing with eps = " << eps_k / mean_diagonal
-                      << " (relative)" << std::endl;
-          // One continuation stage on A + eps_k d I.
-          Problem shifted = problem;
-          for (Index j = 0; j < shifted.size(); ++j)
-            shifted.A.coeffRef(j, j) += eps_k;
-          Report stage;
-          run_method(SolverRegistry::get("pdas"),
-                     shifted,
-                     parameters,
-                     start,
-                     stage,
-                     progress);
-          report.projection_iterations += stage.iterations;
-          ++report.continuation_stages;
-          merge_counters(report.counters, stage.counters);
-          if (!stage.converged())
-            {
-              projection = stage;
-              break;
-            }
+            *progress << "    " << outcome.report.message
+                      << "; regularising with eps = "
+                      << floating_bodies_regularisation << " (auto)"
+                      << std::endl;
+          Attempt retry             = attempt;
+          retry.auto_regularisation = floating_bodies_regularisation;
+          return retry;
         }
-      report.projected = true;
-      if (!projection.converged())
+      if (const FollowUp *hand_over =
+            declared_follow_up(*attempt.method,
+                               attempt.parameters,
+                               outcome.method_status,
+                               FollowUp::Kind::hand_over))
         {
-          report.status  = projection.status;
-          report.message = "projection step: " + projection.message;
-          if (projection.status == Status::singular)
-            report.message +=
-              ": without regularisation this LCP has no unique solution for "
-              "that active set (check that every body can be supported), or "
-              "set 'Solver/Projection = false' to keep the regularised one";
+          Attempt next = follow_up_attempt(*hand_over, attempt);
+          if (progress != nullptr)
+            *progress << "    " << outcome.report.message
+                      << "; continuing from the " << next.method->label
+                      << std::endl;
+          return next;
         }
-      projection_timer.reset(); // records the time before the return
+      return std::nullopt;
+    }
+
+    /**
+     * Run @p attempt and the attempts that continue it (next_attempt), one
+     * after the other: a short loop, not a recursion. A retry starts from
+     * the same start and its report replaces the failed one's (whose work
+     * and time are kept); a hand-over starts afresh, and its report carries
+     * the earlier iterations, work and times, and a note.
+     */
+    Report
+    run_attempts(const Problem &problem,
+                 Attempt        attempt,
+                 Solution      &solution,
+                 std::ostream  *progress)
+    {
+      Solution start   = solution;
+      Outcome  outcome = run_attempt(problem, attempt, solution, progress);
+      for (std::optional<Attempt> next;
+           (next = next_attempt(attempt, outcome, progress));
+           attempt = std::move(*next))
+        {
+          const bool retry = next->method == attempt.method;
+          if (!retry)
+            start = Solution();
+          solution      = start;
+          Outcome later = run_attempt(problem, *next, solution, progress);
+          const Report &earlier = outcome.report;
+          later.report.counters += earlier.counters;
+          if (retry)
+            later.report.add_times(earlier);
+          else
+            {
+              later.report.solver = earlier.solver;
+              later.report.iterations += earlier.iterations;
+              later.report.add_times(earlier,
+                                     attempt.method->name + " (cycled): ");
+              const std::string note =
+                earlier.message + " after " +
+                std::to_string(earlier.iterations) +
+                " iterations; continued from the " + next->method->label +
+                "'s answer";
+              later.report.message = later.report.message.empty() ?
+                                       note :
+                                       note + "; " + later.report.message;
+            }
+          outcome = std::move(later);
+        }
+      // The last attempt met a singular matrix it was not regularised for.
+      if (outcome.method_status == Status::singular &&
+          attempt.method->needs_definite_matrix &&
+          relative_regularisation(attempt) == 0)
+        outcome.report.message += "; regularise ('Solver/Regularisation' > 0)";
+      return outcome.report;
+    }
+
+    /**
+     * A claim the method declares to be verified (Graves' "no solution",
+     * which round-off can produce, as Ainsworth & Mihai report: running
+     * bond, m = 5, without load, where u = 0 solves it) is checked by the
+     * declared method, which never makes such a claim. If that one solves
+     * the LCP, its answer is given and the note says why.
+     */
+    void
+    verify_claim(const Problem  &problem,
+                 const Attempt  &attempt,
+                 const FollowUp &verification,
+                 Solution       &solution,
+                 Report         &report,
+                 std::ostream   *progress)
+    {
+      const Attempt check_attempt = follow_up_attempt(verification, attempt);
+      const std::string &label    = check_attempt.method->label;
+      Solution           check;
+      const Report       check_report =
+        run_attempts(problem, check_attempt, check, progress);
+      report.counters += check_report.counters;
+      report.add_times(check_report, "infeasibility check: ");
+      if (!check_report.converged() ||
+          !(kkt_residuals(problem, check.u).max() <=
+            attempt.parameters.kkt_tolerance))
+        {
+          report.message += "; " + label + " found none either (" +
+                            to_string(check_report.status) + ")";
+          return;
+        }
+      report.message += "; but " + label + " solved it in " +
+                        std::to_string(check_report.iterations +
+                                       check_report.projection_iterations) +
+                        " iterations, so the claim came from round-off: the "
+                        "answer given is " + label + "'s";
+      report.status = Status::converged;
+      solution      = check;
+    }
+
+    // The full LCP: the selected method's attempts, and the verification
+    // of a claim it declares to be checked.
+    Report
+    solve_full(const Problem          &problem,
+               const SolverParameters &parameters,
+               Solution               &solution,
+               std::ostream           *progress,
+               const double            auto_regularisation)
+    {
+      const Attempt first{&SolverRegistry::get(parameters.method),
+                          parameters,
+                          auto_regularisation};
+      Report report = run_attempts(problem, first, solution, progress);
+      if (const FollowUp *verification =
+            declared_follow_up(*first.method,
+                               parameters,
+                               report.status,
+                               FollowUp::Kind::verification))
+        verify_claim(
+          problem, first, *verification, solution, report, progress);
       return report;
+    }
+
+    // Ainsworth & Mihai's reduced LCP on S (3.13-3.18), solved by
+    // solve_full, and u_E recovered.
+    Report
+    solve_schur_complement(const Problem          &problem,
+                           const SolverParameters &parameters,
+                           Solution               &solution,
+                           std::ostream           *progress)
+    {
+      Report report;
+      report.solver = SolverRegistry::get(parameters.method).name + "_sc";
+      std::unique_ptr<SchurComplement> schur;
+      {
+        PhaseTimer timer(report, "schur complement");
+        schur = std::make_unique<SchurComplement>(problem,
+                                                  parameters.max_dense_size,
+                                                  report.counters);
+      }
+      if (schur->singular())
+        {
+          report.status  = Status::singular;
+          report.message = "A_EE (the unconstrained block) is not positive "
+                           "definite, so the Schur complement does not "
+                           "exist; solve the full LCP instead";
+          solution.u     = Vector::Zero(problem.size());
+          return report;
+        }
+      // Ainsworth & Mihai regularise the (scaled) Schur complement with
+      // eps ~ n_c * machine epsilon.
+      const double sc_eps =
+        problem.n_constrained() * std::numeric_limits<double>::epsilon();
+      Solution reduced_solution;
+      if (solution.u.size() == problem.size())
+        {
+          reduced_solution.u.resize(problem.n_constrained());
+          for (Index k = 0; k < problem.n_constrained(); ++k)
+            reduced_solution.u[k] = solution.u[problem.constrained[k]];
+        }
+      SolverParameters reduced_parameters = parameters;
+      reduced_parameters.schur_complement = false;
+      const Report reduced_report = solve_full(schur->reduced_problem(),
+                                               reduced_parameters,
+                                               reduced_solution,
+                                               progress,
+                                               sc_eps);
+      report.status                = reduced_report.status;
+      report.message               = reduced_report.message;
+      report.iterations            = reduced_report.iterations;
+      report.projected             = reduced_report.projected;
+      report.projection_iterations = reduced_report.projection_iterations;
+      report.regularisation        = reduced_report.regularisation;
+      report.counters += reduced_report.counters;
+      report.add_times(reduced_report);
+      PhaseTimer timer(report, "recover u_E");
+      solution.u = schur->recover(reduced_solution.u);
+      return report;
+    }
+
+    /**
+     * The final check, always against the original problem: lambda, the
+     * active set, KKT residuals and energy from u alone, and 'inaccurate'
+     * for an answer whose method's test passed but whose KKT residuals do
+     * not.
+     */
+    void
+    check_answer(const Problem          &problem,
+                 const SolverParameters &parameters,
+                 Solution               &solution,
+                 Report                 &report)
+    {
+      {
+        PhaseTimer timer(report, "kkt check");
+        if (solution.u.size() != problem.size())
+          solution.u = Vector::Zero(problem.size());
+        solution.lambda = multiplier(problem, solution.u);
+        // An index is active if u sits exactly at its bound (active-set and
+        // pivoting methods put it there) or, for interior-point iterates
+        // that never reach a bound, if its slack is smaller than its
+        // multiplier in the same units (slack times the diagonal of A).
+        solution.active_set.clear();
+        for (Index k = 0; k < problem.n_constrained(); ++k)
+          {
+            const Index  i     = problem.constrained[k];
+            const double slack = solution.u[i] - problem.lower_bound[k];
+            const double scale =
+              problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : 1.0;
+            if (slack == 0 || slack * scale < solution.lambda[i])
+              solution.active_set.push_back(i);
+          }
+        report.n_active = static_cast<unsigned int>(solution.active_set.size());
+        report.kkt      = kkt_residuals(problem, solution.u);
+        report.energy   = energy(problem, solution.u);
+        ++report.counters.matrix_vector_products;
+      }
+      if (report.status == Status::converged &&
+          !(report.kkt.max() <= parameters.kkt_tolerance))
+        {
+          std::ostringstream message;
+          message << std::setprecision(3)
+                  << "the method's stopping test passed but the relative KKT "
+                     "residual is "
+                  << report.kkt.max() << " > 'Solver/KKT tolerance' = "
+                  << parameters.kkt_tolerance;
+          report.status  = Status::inaccurate;
+          report.message = message.str();
+        }
     }
   } // namespace
 
@@ -444,104 +463,20 @@ namespace unilateral::lcp
   solve_lcp(const Problem          &problem,
             const SolverParameters &parameters,
             Solution               &solution,
-            std::ostream           *progress,
-            const double            auto_regularisation)
+            std::ostream           *progress)
   {
-    Report report;
-    if (!parameters.schur_complement)
-      report =
-        solve_full(problem, parameters, solution, progress, auto_regularisation);
-    else
-      {
-        report.solver = SolverRegistry::get(parameters.method).name + "_sc";
-        std::unique_ptr<SchurComplement> schur;
-        {
-          PhaseTimer timer(report, "schur complement");
-          schur = std::make_unique<SchurComplement>(problem,
-                                                    parameters.max_dense_size,
-                                                    report.counters);
-        }
-        if (schur->singular())
-          {
-            report.status  = Status::singular;
-            report.message = "A_EE (the unconstrained block) is not positive "
-                             "definite, so the Schur complement does not "
-                             "exist; solve the full LCP instead";
-            solution.u     = Vector::Zero(problem.size());
-          }
-        else
-          {
-            // Ainsworth & Mihai regularise the (scaled) Schur complement with
-            // eps ~ n_c * machine epsilon.
-            const double sc_eps =
-              problem.n_constrained() * std::numeric_limits<double>::epsilon();
-            Solution reduced_solution;
-            if (solution.u.size() == problem.size())
-              {
-                reduced_solution.u.resize(problem.n_constrained());
-                for (Index k = 0; k < problem.n_constrained(); ++k)
-                  reduced_solution.u[k] = solution.u[problem.constrained[k]];
-              }
-            SolverParameters reduced_parameters = parameters;
-            reduced_parameters.schur_complement = false;
-            const Report reduced_report = solve_full(schur->reduced_problem(),
-                                                     reduced_parameters,
-                                                     reduced_solution,
-                                                     progress,
-                                                     sc_eps);
-            report.status                = reduced_report.status;
-            report.message               = reduced_report.message;
-            report.iterations            = reduced_report.iterations;
-            report.projected             = reduced_report.projected;
-            report.projection_iterations = reduced_report.projection_iterations;
-            report.regularisation        = reduced_report.regularisation;
-            merge_counters(report.counters, reduced_report.counters);
-            merge_times(report, reduced_report, "");
-            PhaseTimer timer(report, "recover u_E");
-            solution.u = schur->recover(reduced_solution.u);
-          }
-      }
-
+    Report report =
+      parameters.schur_complement ?
+        solve_schur_complement(problem, parameters, solution, progress) :
+        solve_full(problem,
+                   parameters,
+                   solution,
+                   progress,
+                   problem.floating_bodies ? floating_bodies_regularisation :
+                                             0.0);
     // Release the last factorisation (it can be large) before returning.
     solution.factor.reset();
-
-    // The final check, always against the original problem.
-    {
-      PhaseTimer timer(report, "kkt check");
-      if (solution.u.size() != problem.size())
-        solution.u = Vector::Zero(problem.size());
-      solution.lambda = multiplier(problem, solution.u);
-      // An index is active if u sits exactly at its bound (active-set and
-      // pivoting methods put it there) or, for interior-point iterates that
-      // never reach a bound, if its slack is smaller than its multiplier in
-      // the same units (slack times the diagonal of A).
-      solution.active_set.clear();
-      for (Index k = 0; k < problem.n_constrained(); ++k)
-        {
-          const Index  i     = problem.constrained[k];
-          const double slack = solution.u[i] - problem.lower_bound[k];
-          const double scale =
-            problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : 1.0;
-          if (slack == 0 || slack * scale < solution.lambda[i])
-            solution.active_set.push_back(i);
-        }
-      report.n_active = static_cast<unsigned int>(solution.active_set.size());
-      report.kkt      = kkt_residuals(problem, solution.u);
-      report.energy   = energy(problem, solution.u);
-      ++report.counters.matrix_vector_products;
-    }
-    if (report.status == Status::converged &&
-        !(report.kkt.max() <= parameters.kkt_tolerance))
-      {
-        std::ostringstream message;
-        message << std::setprecision(3)
-                << "the method's stopping test passed but the relative KKT "
-                   "residual is "
-                << report.kkt.max() << " > 'Solver/KKT tolerance' = "
-                << parameters.kkt_tolerance;
-        report.status  = Status::inaccurate;
-        report.message = message.str();
-      }
+    check_answer(problem, parameters, solution, report);
     return report;
   }
 } // namespace unilateral::lcp

@@ -10,6 +10,21 @@
 
 namespace unilateral::lcp
 {
+  namespace
+  {
+    // Parent of column j in the elimination tree of a simplicial factor:
+    // the first row below the diagonal (CHOLMOD keeps the diagonal first
+    // and the rows of each column sorted), -1 at a root.
+    Index
+    simplicial_parent(const cholmod_factor *L, const Index j)
+    {
+      const auto *Lp  = static_cast<const Index *>(L->p);
+      const auto *Li  = static_cast<const Index *>(L->i);
+      const auto *Lnz = static_cast<const Index *>(L->nz);
+      return Lnz[j] > 1 ? Li[Lp[j] + 1] : -1;
+    }
+  } // namespace
+
   struct SparseCholesky::Implementation
   {
     cholmod_common common;
@@ -181,20 +196,16 @@ namespace unilateral::lcp
       return inverse_ordering[k];
     }
 
-    // Parent of column j in the elimination tree of a simplicial factor:
-    // the first row below the diagonal (CHOLMOD keeps the diagonal first
-    // and the rows of each column sorted), -1 at a root.
-    static Index
-    simplicial_parent(const cholmod_factor *L, const Index j)
-    {
-      const auto *Lp  = static_cast<const Index *>(L->p);
-      const auto *Li  = static_cast<const Index *>(L->i);
-      const auto *Lnz = static_cast<const Index *>(L->nz);
-      return Lnz[j] > 1 ? Li[Lp[j] + 1] : -1;
-    }
-
     void
     compute_path_entries();
+
+    void
+    analyse(const SparseMatrix       &A,
+            const std::vector<Index> &ordering,
+            std::uint64_t             hash,
+            bool                      relaxed_supernodes,
+            bool                      try_nested_dissection,
+            Counters                 &counters);
 
     bool
     build_permuted(const SparseMatrix &A);
@@ -224,6 +235,93 @@ namespace unilateral::lcp
 
   SparseCholesky::~SparseCholesky() = default;
 
+  /**
+   * The symbolic analysis of A's pattern: the fill-reducing ordering (a
+   * given one, or AMD, and METIS's nested dissection as well where AMD
+   * leaves large dense fronts, keeping the one with fewer flops), the
+   * memory check of the factor it implies, and the bookkeeping of the
+   * analysed pattern.
+   */
+  void
+  SparseCholesky::Implementation::analyse(const SparseMatrix       &A,
+                                          const std::vector<Index> &ordering,
+                                          const std::uint64_t       hash,
+                                          const bool relaxed_supernodes,
+                                          const bool try_nested_dissection,
+                                          Counters  &counters)
+  {
+    cholmod_sparse matrix = view(A);
+    if (factor != nullptr)
+      cholmod_free_factor(&factor, &common);
+    set_amalgamation(relaxed_supernodes);
+    if (ordering.empty())
+      {
+        Implementation::require_ordering_memory(A);
+        common.nmethods           = 1;
+        common.method[0].ordering = CHOLMOD_AMD;
+        factor = cholmod_analyze(&matrix, &common);
+        const double amd_flops = common.fl;
+        const double amd_lnz   = common.lnz;
+        if (try_nested_dissection && factor != nullptr &&
+            amd_flops >= 500 * amd_lnz)
+          {
+            common.method[0].ordering = CHOLMOD_METIS;
+            cholmod_factor *nested =
+              cholmod_analyze(&matrix, &common);
+            if (nested != nullptr && common.fl < amd_flops)
+              std::swap(factor, nested);
+            else
+              {
+                // Keep AMD's analysis and its statistics.
+                common.fl  = amd_flops;
+                common.lnz = amd_lnz;
+              }
+            if (nested != nullptr)
+              cholmod_free_factor(&nested, &common);
+            ++counters.symbolic_analyses;
+          }
+      }
+    else
+      {
+        common.nmethods           = 1;
+        common.method[0].ordering = CHOLMOD_GIVEN;
+        factor                    = cholmod_analyze_p(
+          &matrix, const_cast<Index *>(ordering.data()), nullptr, 0,
+          &common);
+      }
+    if (factor == nullptr)
+      throw_failure("analysis", A.rows());
+    // The numeric factor is allocated next: refuse it here, with a
+    // message, rather than be killed by the kernel half-way (and leave
+    // no analysis behind that a later call could take for this one's).
+    const double factor_bytes =
+      factor->is_super ?
+        8.0 * static_cast<double>(factor->xsize) :
+        (8.0 + sizeof(Index)) * common.lnz;
+    try
+      {
+        memory::require(factor_bytes,
+                        "the Cholesky factor of a system with " +
+                          std::to_string(A.rows()) + " unknowns");
+      }
+    catch (const OutOfMemory &)
+      {
+        cholmod_free_factor(&factor, &common);
+        throw;
+      }
+    pattern_size     = A.rows();
+    pattern_nonzeros = A.nonZeros();
+    pattern_hash     = hash;
+    pattern_relaxed  = relaxed_supernodes;
+    analysis_flops   = common.fl;
+    inverse_ordering.clear(); // both computed on first need
+    path_entries.clear();
+    if (permuted != nullptr)
+      cholmod_free_sparse(&permuted, &common);
+    factorisations_of_pattern = 0;
+    ++counters.symbolic_analyses;
+  }
+
   bool
   SparseCholesky::factorise(const SparseMatrix &A, Counters &counters)
   {
@@ -249,77 +347,12 @@ namespace unilateral::lcp
     if (impl.factor == nullptr || impl.pattern_size != A.rows() ||
         impl.pattern_nonzeros != A.nonZeros() || impl.pattern_hash != hash ||
         impl.pattern_relaxed != relaxed_supernodes)
-      {
-        if (impl.factor != nullptr)
-          cholmod_free_factor(&impl.factor, &impl.common);
-        impl.set_amalgamation(relaxed_supernodes);
-        if (ordering.empty())
-          {
-            Implementation::require_ordering_memory(A);
-            impl.common.nmethods           = 1;
-            impl.common.method[0].ordering = CHOLMOD_AMD;
-            impl.factor = cholmod_analyze(&matrix, &impl.common);
-            const double amd_flops = impl.common.fl;
-            const double amd_lnz   = impl.common.lnz;
-            if (try_nested_dissection && impl.factor != nullptr &&
-                amd_flops >= 500 * amd_lnz)
-              {
-                impl.common.method[0].ordering = CHOLMOD_METIS;
-                cholmod_factor *nested =
-                  cholmod_analyze(&matrix, &impl.common);
-                if (nested != nullptr && impl.common.fl < amd_flops)
-                  std::swap(impl.factor, nested);
-                else
-                  {
-                    // Keep AMD's analysis and its statistics.
-                    impl.common.fl  = amd_flops;
-                    impl.common.lnz = amd_lnz;
-                  }
-                if (nested != nullptr)
-                  cholmod_free_factor(&nested, &impl.common);
-                ++counters.symbolic_analyses;
-              }
-          }
-        else
-          {
-            impl.common.nmethods           = 1;
-            impl.common.method[0].ordering = CHOLMOD_GIVEN;
-            impl.factor                    = cholmod_analyze_p(
-              &matrix, const_cast<Index *>(ordering.data()), nullptr, 0,
-              &impl.common);
-          }
-        if (impl.factor == nullptr)
-          impl.throw_failure("analysis", A.rows());
-        // The numeric factor is allocated next: refuse it here, with a
-        // message, rather than be killed by the kernel half-way (and leave
-        // no analysis behind that a later call could take for this one's).
-        const double factor_bytes =
-          impl.factor->is_super ?
-            8.0 * static_cast<double>(impl.factor->xsize) :
-            (8.0 + sizeof(Index)) * impl.common.lnz;
-        try
-          {
-            memory::require(factor_bytes,
-                            "the Cholesky factor of a system with " +
-                              std::to_string(A.rows()) + " unknowns");
-          }
-        catch (const OutOfMemory &)
-          {
-            cholmod_free_factor(&impl.factor, &impl.common);
-            throw;
-          }
-        impl.pattern_size     = A.rows();
-        impl.pattern_nonzeros = A.nonZeros();
-        impl.pattern_hash     = hash;
-        impl.pattern_relaxed  = relaxed_supernodes;
-        impl.analysis_flops   = impl.common.fl;
-        impl.inverse_ordering.clear(); // both computed on first need
-        impl.path_entries.clear();
-        if (impl.permuted != nullptr)
-          cholmod_free_sparse(&impl.permuted, &impl.common);
-        impl.factorisations_of_pattern = 0;
-        ++counters.symbolic_analyses;
-      }
+      impl.analyse(A,
+                   ordering,
+                   hash,
+                   relaxed_supernodes,
+                   try_nested_dissection,
+                   counters);
 
     if (impl.modified != nullptr)
       cholmod_free_factor(&impl.modified, &impl.common);
@@ -672,6 +705,187 @@ namespace unilateral::lcp
     return static_cast<double>(factor->nzmax);
   }
 
+  namespace
+  {
+    /**
+     * The forward solve's view of a factor L: its nodes (supernodes, or the
+     * single columns of a simplicial factor), their columns, and their
+     * parents in the elimination tree.
+     */
+    class EliminationTree
+    {
+    public:
+      explicit EliminationTree(const cholmod_factor *L)
+        : L(L)
+        , super(L->is_super)
+        , n_nodes(super ? static_cast<Index>(L->nsuper) :
+                          static_cast<Index>(L->n))
+        , first_column(static_cast<const Index *>(L->super))
+        , row_start(static_cast<const Index *>(L->pi))
+        , rows(static_cast<const Index *>(L->s))
+      {
+        if (super)
+          {
+            node_of.resize(L->n);
+            for (Index s = 0; s < n_nodes; ++s)
+              for (Index j = first_column[s]; j < first_column[s + 1]; ++j)
+                node_of[j] = s;
+          }
+      }
+
+      /// The node of column @p j.
+      Index
+      node(const Index j) const
+      {
+        return super ? node_of[j] : j;
+      }
+
+      Index
+      columns(const Index s) const
+      {
+        return super ? first_column[s + 1] - first_column[s] : 1;
+      }
+
+      Index
+      first(const Index s) const
+      {
+        return super ? first_column[s] : s;
+      }
+
+      /// The node of the first row below the diagonal block, -1 at a root.
+      Index
+      parent(const Index s) const
+      {
+        if (!super)
+          return simplicial_parent(L, s);
+        const Index below = row_start[s] + columns(s);
+        return below < row_start[s + 1] ? node(rows[below]) : -1;
+      }
+
+      const cholmod_factor *const L;
+      const bool                  super;
+      const Index                 n_nodes;
+
+    private:
+      const Index       *first_column, *row_start, *rows;
+      std::vector<Index> node_of;
+    };
+
+    /// The columns of B that one forward solve takes together: the nodes
+    /// of their paths (ascending), where each starts in the block's rows,
+    /// and Y = L^-1 B on those rows (scaled by D^-1/2 for L D L').
+    struct PathBlock
+    {
+      std::vector<Index> nodes, offsets;
+      DenseMatrix        Y;
+    };
+
+    /**
+     * Y_s = L_ss^-1 Y_s at each node s of @p block's paths in turn, and
+     * the update of the rows below it (@p local: the row of each column of
+     * L in the block). False on a nonpositive pivot of L D L'.
+     */
+    bool
+    forward_solve(const EliminationTree    &tree,
+                  const std::vector<Index> &local,
+                  PathBlock                &block)
+    {
+      const cholmod_factor *L  = tree.L;
+      const double         *Lx = static_cast<const double *>(L->x);
+      for (std::size_t q = 0; q < block.nodes.size(); ++q)
+        {
+          const Index s   = block.nodes[q];
+          auto        Y_s = block.Y.middleRows(block.offsets[q], tree.columns(s));
+          if (tree.super)
+            {
+              const Index *row_start   = static_cast<const Index *>(L->pi);
+              const Index *value_start = static_cast<const Index *>(L->px);
+              const Index  nscol       = tree.columns(s);
+              const Index  nsrow       = row_start[s + 1] - row_start[s];
+              using Stride             = Eigen::OuterStride<>;
+              const Eigen::Map<const DenseMatrix, 0, Stride> L11(
+                Lx + value_start[s], nscol, nscol, Stride(nsrow));
+              const Eigen::Map<const DenseMatrix, 0, Stride> L21(
+                Lx + value_start[s] + nscol, nsrow - nscol, nscol,
+                Stride(nsrow));
+              L11.triangularView<Eigen::Lower>().solveInPlace(Y_s);
+              if (nsrow > nscol)
+                {
+                  const DenseMatrix update = L21 * Y_s;
+                  const Index      *below =
+                    static_cast<const Index *>(L->s) + row_start[s] + nscol;
+                  for (Index r = 0; r < nsrow - nscol; ++r)
+                    block.Y.row(local[below[r]]) -= update.row(r);
+                }
+            }
+          else
+            {
+              // Unit L; the diagonal entry of the column holds D.
+              const Index *Lp  = static_cast<const Index *>(L->p);
+              const Index *Li  = static_cast<const Index *>(L->i);
+              const Index *Lnz = static_cast<const Index *>(L->nz);
+              const double d   = Lx[Lp[s]];
+              if (!(d > 0))
+                return false;
+              for (Index p = Lp[s] + 1; p < Lp[s] + Lnz[s]; ++p)
+                block.Y.row(local[Li[p]]) -= Lx[p] * Y_s;
+              Y_s /= std::sqrt(d);
+            }
+        }
+      return true;
+    }
+
+    /// G = Y' Y over the rows two blocks share (the nodes on both of their
+    /// paths), in the blocks' column order, @p width columns per block.
+    DenseMatrix
+    gram_of_blocks(const EliminationTree        &tree,
+                   const std::vector<PathBlock> &blocks,
+                   const Index                   k,
+                   const Index                   width)
+    {
+      DenseMatrix        G(k, k);
+      std::vector<Index> rows_a, rows_b;
+      for (std::size_t a = 0; a < blocks.size(); ++a)
+        for (std::size_t b = a; b < blocks.size(); ++b)
+          {
+            const PathBlock &A_block = blocks[a], &B_block = blocks[b];
+            auto             G_ab    = G.block(a * width,
+                                   b * width,
+                                   A_block.Y.cols(),
+                                   B_block.Y.cols());
+            if (a == b)
+              {
+                G_ab.noalias() = A_block.Y.transpose() * A_block.Y;
+                continue;
+              }
+            rows_a.clear();
+            rows_b.clear();
+            for (std::size_t p = 0, q = 0;
+                 p < A_block.nodes.size() && q < B_block.nodes.size();)
+              if (A_block.nodes[p] < B_block.nodes[q])
+                ++p;
+              else if (B_block.nodes[q] < A_block.nodes[p])
+                ++q;
+              else
+                {
+                  for (Index j = 0; j < tree.columns(A_block.nodes[p]); ++j)
+                    {
+                      rows_a.push_back(A_block.offsets[p] + j);
+                      rows_b.push_back(B_block.offsets[q] + j);
+                    }
+                  ++p;
+                  ++q;
+                }
+            const DenseMatrix Y_a = A_block.Y(rows_a, Eigen::all);
+            const DenseMatrix Y_b = B_block.Y(rows_b, Eigen::all);
+            G_ab.noalias()        = Y_a.transpose() * Y_b;
+            G.block(b * width, a * width, B_block.Y.cols(), A_block.Y.cols()) =
+              G_ab.transpose();
+          }
+      return G;
+    }
+  } // namespace
+
   bool
   SparseCholesky::inverse_gram(const SparseMatrix &B,
                                DenseMatrix        &G,
@@ -692,44 +906,10 @@ namespace unilateral::lcp
       throw std::logic_error("SparseCholesky::inverse_gram: B has " +
                              std::to_string(B.rows()) + " rows, A " +
                              std::to_string(n));
-    const bool super = L->is_super;
     // Supernodal factors are L L', simplicial ones (the modified copy) L D L'.
-    if (super != static_cast<bool>(L->is_ll))
+    if (static_cast<bool>(L->is_super) != static_cast<bool>(L->is_ll))
       return false;
-    const Index *Lp  = static_cast<const Index *>(L->p);
-    const Index *Li  = static_cast<const Index *>(L->i);
-    const Index *Lnz = static_cast<const Index *>(L->nz);
-    const Index *first_column = static_cast<const Index *>(L->super);
-    const Index *row_start    = static_cast<const Index *>(L->pi);
-    const Index *value_start  = static_cast<const Index *>(L->px);
-    const Index *rows         = static_cast<const Index *>(L->s);
-    const double *Lx          = static_cast<const double *>(L->x);
-
-    // The nodes of the forward solve: supernodes, or single columns.
-    const Index n_nodes = super ? static_cast<Index>(L->nsuper) : n;
-    std::vector<Index> node_of;
-    if (super)
-      {
-        node_of.resize(n);
-        for (Index s = 0; s < n_nodes; ++s)
-          for (Index j = first_column[s]; j < first_column[s + 1]; ++j)
-            node_of[j] = s;
-      }
-    const auto node    = [&](const Index j) { return super ? node_of[j] : j; };
-    const auto columns = [&](const Index s) {
-      return super ? first_column[s + 1] - first_column[s] : 1;
-    };
-    const auto first = [&](const Index s) {
-      return super ? first_column[s] : s;
-    };
-    // Parent in the elimination tree: the node of the first row below the
-    // diagonal block.
-    const auto parent_of = [&](const Index s) -> Index {
-      if (!super)
-        return Implementation::simplicial_parent(L, s);
-      const Index below = row_start[s] + columns(s);
-      return below < row_start[s + 1] ? node(rows[below]) : -1;
-    };
+    const EliminationTree tree(L);
 
     // Columns ordered by where they enter the tree, so that a block's paths
     // share most of their nodes.
@@ -744,26 +924,21 @@ namespace unilateral::lcp
       return entry[a] < entry[b];
     });
 
-    // Per block: its nodes (ascending), where each starts in the block's
-    // rows, and Y on those rows (scaled by D^-1/2 for L D L').
-    struct Block
-    {
-      std::vector<Index> nodes, offsets;
-      DenseMatrix        Y;
-    };
-    constexpr Index    width = 32;
-    std::vector<Block> blocks;
-    std::vector<char>  marked(n_nodes, 0);
-    std::vector<Index> local(n, -1);
-    double             kept = 0;
+    // Blocks of columns, each forward-solved along the union of its paths.
+    constexpr Index        width = 32;
+    std::vector<PathBlock> blocks;
+    std::vector<char>      marked(tree.n_nodes, 0);
+    std::vector<Index>     local(n, -1);
+    double                 kept = 0;
     for (Index start = 0; start < k; start += width)
       {
-        const Index w = std::min(width, k - start);
-        Block      &block = blocks.emplace_back();
+        const Index w     = std::min(width, k - start);
+        PathBlock  &block = blocks.emplace_back();
         for (Index c = start; c < start + w; ++c)
           for (SparseMatrix::InnerIterator it(B, order[c]); it; ++it)
-            for (Index s = node(impl.position_of(it.row())); s >= 0 && !marked[s];
-                 s = parent_of(s))
+            for (Index s = tree.node(impl.position_of(it.row()));
+                 s >= 0 && !marked[s];
+                 s = tree.parent(s))
               {
                 marked[s] = 1;
                 block.nodes.push_back(s);
@@ -774,9 +949,9 @@ namespace unilateral::lcp
           {
             marked[s] = 0;
             block.offsets.push_back(size);
-            for (Index j = 0; j < columns(s); ++j)
-              local[first(s) + j] = size + j;
-            size += columns(s);
+            for (Index j = 0; j < tree.columns(s); ++j)
+              local[tree.first(s) + j] = size + j;
+            size += tree.columns(s);
           }
         kept += static_cast<double>(size) * w;
         if (kept > max_entries)
@@ -785,84 +960,14 @@ namespace unilateral::lcp
         for (Index c = 0; c < w; ++c)
           for (SparseMatrix::InnerIterator it(B, order[start + c]); it; ++it)
             block.Y(local[impl.position_of(it.row())], c) += it.value();
-
-        for (std::size_t q = 0; q < block.nodes.size(); ++q)
-          {
-            const Index s = block.nodes[q];
-            auto        Y_s = block.Y.middleRows(block.offsets[q], columns(s));
-            if (super)
-              {
-                const Index nscol = columns(s);
-                const Index nsrow = row_start[s + 1] - row_start[s];
-                using Stride      = Eigen::OuterStride<>;
-                const Eigen::Map<const DenseMatrix, 0, Stride> L11(
-                  Lx + value_start[s], nscol, nscol, Stride(nsrow));
-                const Eigen::Map<const DenseMatrix, 0, Stride> L21(
-                  Lx + value_start[s] + nscol, nsrow - nscol, nscol,
-                  Stride(nsrow));
-                L11.triangularView<Eigen::Lower>().solveInPlace(Y_s);
-                if (nsrow > nscol)
-                  {
-                    const DenseMatrix update = L21 * Y_s;
-                    const Index *below = rows + row_start[s] + nscol;
-                    for (Index r = 0; r < nsrow - nscol; ++r)
-                      block.Y.row(local[below[r]]) -= update.row(r);
-                  }
-              }
-            else
-              {
-                // Unit L; the diagonal entry of the column holds D.
-                const double d = Lx[Lp[s]];
-                if (!(d > 0))
-                  return false;
-                for (Index p = Lp[s] + 1; p < Lp[s] + Lnz[s]; ++p)
-                  block.Y.row(local[Li[p]]) -= Lx[p] * Y_s;
-                Y_s /= std::sqrt(d);
-              }
-          }
+        if (!forward_solve(tree, local, block))
+          return false;
         for (const Index s : block.nodes)
-          for (Index j = 0; j < columns(s); ++j)
-            local[first(s) + j] = -1;
+          for (Index j = 0; j < tree.columns(s); ++j)
+            local[tree.first(s) + j] = -1;
       }
 
-    // G over the rows two blocks share: the nodes on both of their paths.
-    DenseMatrix sorted_G(k, k);
-    std::vector<Index> rows_a, rows_b;
-    for (std::size_t a = 0; a < blocks.size(); ++a)
-      for (std::size_t b = a; b < blocks.size(); ++b)
-        {
-          const Block &A_block = blocks[a], &B_block = blocks[b];
-          auto         G_ab    = sorted_G.block(a * width, b * width,
-                                       A_block.Y.cols(), B_block.Y.cols());
-          if (a == b)
-            {
-              G_ab.noalias() = A_block.Y.transpose() * A_block.Y;
-              continue;
-            }
-          rows_a.clear();
-          rows_b.clear();
-          for (std::size_t p = 0, q = 0;
-               p < A_block.nodes.size() && q < B_block.nodes.size();)
-            if (A_block.nodes[p] < B_block.nodes[q])
-              ++p;
-            else if (B_block.nodes[q] < A_block.nodes[p])
-              ++q;
-            else
-              {
-                for (Index j = 0; j < columns(A_block.nodes[p]); ++j)
-                  {
-                    rows_a.push_back(A_block.offsets[p] + j);
-                    rows_b.push_back(B_block.offsets[q] + j);
-                  }
-                ++p;
-                ++q;
-              }
-          const DenseMatrix Y_a = A_block.Y(rows_a, Eigen::all);
-          const DenseMatrix Y_b = B_block.Y(rows_b, Eigen::all);
-          G_ab.noalias() = Y_a.transpose() * Y_b;
-          sorted_G.block(b * width, a * width, B_block.Y.cols(),
-                         A_block.Y.cols()) = G_ab.transpose();
-        }
+    const DenseMatrix sorted_G = gram_of_blocks(tree, blocks, k, width);
     G.resize(k, k);
     for (Index r = 0; r < k; ++r)
       for (Index c = 0; c < k; ++c)

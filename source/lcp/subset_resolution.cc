@@ -1,4 +1,4 @@
-#include <unilateral/lcp/solver.h>
+#include <unilateral/lcp/principal_pivoting.h>
 #include <unilateral/lcp/subset_resolution.h>
 
 #include <algorithm>
@@ -134,13 +134,10 @@ namespace unilateral::lcp
       }
     check_and_normalise(reduced);
 
-    SolverParameters graves_parameters;
-    graves_parameters.method = "graves";
     Solution reduced_solution;
     Report   reduced_report;
-    SolverRegistry::get("graves")
-      .create(graves_parameters)
-      ->solve(reduced, reduced_solution, reduced_report, nullptr);
+    principal_pivoting(reduced, 10 * k + 100, reduced_solution,
+                       reduced_report, nullptr);
     if (!reduced_report.converged())
       return SubsetResolution::no_solution;
 

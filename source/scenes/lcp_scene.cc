@@ -42,6 +42,7 @@ namespace unilateral
   }
 
   LcpScene::LcpScene(dealii::ParameterHandler &prm)
+    : Scene(registered_name)
   {
     prm.enter_subsection("LCP");
     matrix_file      = prm.get("Matrix file");
@@ -56,39 +57,27 @@ namespace unilateral
                       "an LCP needs all three files");
   }
 
-  lcp::Report
-  LcpScene::run(RunContext &context)
+  void
+  LcpScene::assemble_system(RunContext &context)
   {
-    lcp::Problem problem;
-    {
-      dealii::TimerOutput::Scope scope(*context.timer, "read LCP");
-      problem = lcp::read_problem(
-        resolve_relative_to(context.parameter_file, matrix_file),
-        resolve_relative_to(context.parameter_file, rhs_file),
-        resolve_relative_to(context.parameter_file, constraints_file));
-    }
-    export_lcp_if_requested(context, problem);
+    lcp_problem = lcp::read_problem(
+      resolve_relative_to(context.parameter_file, matrix_file),
+      resolve_relative_to(context.parameter_file, rhs_file),
+      resolve_relative_to(context.parameter_file, constraints_file));
+  }
 
-    lcp::Solution     solution;
-    const lcp::Report report = solve(context, *this, problem, solution);
-
-    {
-      dealii::TimerOutput::Scope scope(*context.timer, "output");
-      const std::string directory = context.output_directory.string();
-      lcp::write_vector(solution.u, directory + "/u.txt");
-      lcp::write_vector(solution.lambda, directory + "/lambda.txt");
-      lcp::Vector active(solution.active_set.size());
-      for (std::size_t k = 0; k < solution.active_set.size(); ++k)
-        active[k] = solution.active_set[k] + 1;
-      lcp::write_vector(active, directory + "/active_set.txt");
-    }
-
-    print_solver_summary(*context.out, problem, report);
-    write_summary(context, summary_base(context, "lcp", problem, report));
-    return report;
+  void
+  LcpScene::postprocess(const RunContext &context, lcp::Report &)
+  {
+    const std::string directory = context.output_directory.string();
+    lcp::write_vector(lcp_solution.u, directory + "/u.txt");
+    lcp::write_vector(lcp_solution.lambda, directory + "/lambda.txt");
+    lcp::Vector active(lcp_solution.active_set.size());
+    for (std::size_t k = 0; k < lcp_solution.active_set.size(); ++k)
+      active[k] = lcp_solution.active_set[k] + 1;
+    lcp::write_vector(active, directory + "/active_set.txt");
   }
 
   UNILATERAL_REGISTER_SCENE(LcpScene,
-                            "lcp",
                             "an LCP read from Matrix Market and text files")
 } // namespace unilateral

@@ -1,86 +1,230 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/lcp/io.h>
+#include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/scenes/scene.h>
 
 #include <cmath>
 #include <iomanip>
-#include <sstream>
 #include <ostream>
+#include <sstream>
 
 namespace unilateral
 {
-  std::vector<SceneInfo> &
-  SceneRegistry::entries()
+  template class Registry<SceneInfo>;
+
+  std::optional<dealii::TimerOutput::Scope>
+  RunContext::section(const std::string &name) const
   {
-    static std::vector<SceneInfo> registered;
-    return registered;
+    if (timer == nullptr)
+      return std::nullopt;
+    return std::optional<dealii::TimerOutput::Scope>(std::in_place,
+                                                     *timer,
+                                                     name);
   }
 
-  bool
-  SceneRegistry::add(SceneInfo info)
+  void
+  RunContext::stage(const std::string &scene, const std::string &text) const
   {
-    entries().push_back(std::move(info));
-    return true;
+    if (progress != nullptr)
+      *progress << "  " << scene << ": " << text << std::endl;
   }
 
-  const SceneInfo &
-  SceneRegistry::get(const std::string &name)
+  namespace
   {
-    for (const auto &info : entries())
-      if (info.name == name)
-        return info;
-    throw InputError("parameter 'Scene' = " + name +
-                     ": unknown scene; choose one of " + selection());
+    /**
+     * The keys every summary.json has: scene, solver, n_unknowns,
+     * n_constraints, n_active, iterations, converged, status, message, kkt,
+     * energy, time (per stage of the pipeline and per solver phase), calls
+     * (how often each stage ran; solver phases that ran count 1) and
+     * counters (the solver's work).
+     */
+    JsonObject
+    summary_base(const RunContext   &context,
+                 const std::string  &scene,
+                 const lcp::Problem &problem,
+                 const lcp::Report  &report)
+    {
+      JsonObject summary;
+      summary.set("scene", scene)
+        .set("run_name", context.run_name)
+        .set("solver", report.solver)
+        .set("schur_complement", context.solver.schur_complement)
+        .set("n_unknowns", problem.size())
+        .set("n_constraints", problem.n_constrained())
+        .set("n_active", report.n_active)
+        .set("iterations", report.iterations)
+        .set("projection_iterations", report.projection_iterations)
+        .set("continuation_stages", report.continuation_stages)
+        .set("regularisation", report.regularisation)
+        .set("converged", report.converged())
+        .set("status", lcp::to_string(report.status))
+        .set("message", report.message)
+        .set("energy", report.energy);
+      JsonObject &kkt = summary.object("kkt");
+      kkt.set("stationarity", report.kkt.stationarity)
+        .set("primal_feasibility", report.kkt.primal_feasibility)
+        .set("dual_feasibility", report.kkt.dual_feasibility)
+        .set("complementarity", report.kkt.complementarity)
+        .set("max", report.kkt.max());
+
+      JsonObject &time = summary.object("time");
+      if (context.timer != nullptr)
+        for (const auto &[section, seconds] : context.timer->get_summary_data(
+               dealii::TimerOutput::total_wall_time))
+          time.set(section, seconds);
+      JsonObject &solver_time = time.object("solver");
+      for (const auto &[phase, seconds] : report.phase_times)
+        solver_time.set(phase, seconds);
+
+      // How often each stage ran: tests check from these, not from times,
+      // that a stage a run does not need never ran.
+      JsonObject &calls = summary.object("calls");
+      if (context.timer != nullptr)
+        for (const auto &[section, n] :
+             context.timer->get_summary_data(dealii::TimerOutput::n_calls))
+          calls.set(section, static_cast<unsigned int>(n));
+      for (const auto &[phase, seconds] : report.phase_times)
+        calls.set("solver: " + phase, 1u);
+
+      const lcp::Counters &work     = report.counters;
+      JsonObject          &counters = summary.object("counters");
+      counters.set("orderings", work.orderings)
+        .set("symbolic_analyses", work.symbolic_analyses)
+        .set("numeric_factorisations", work.numeric_factorisations)
+        .set("reused_factorisations", work.reused_factorisations)
+        .set("modified_factorisations", work.modified_factorisations)
+        .set("factor_row_modifications", work.factor_row_modifications)
+        .set("resolved_subsets", work.resolved_subsets)
+        .set("resolved_indices", work.resolved_indices)
+        .set("cg_iterations", work.cg_iterations)
+        .set("triangular_solves", work.triangular_solves)
+        .set("partial_forward_solves", work.partial_forward_solves)
+        .set("centrality_correctors", work.centrality_correctors)
+        .set("matrix_vector_products", work.matrix_vector_products);
+      return summary;
+    }
+
+    /// With Output/Export LCP: the LCP in the lcp scene's file format.
+    void
+    export_lcp_if_requested(const RunContext   &context,
+                            const lcp::Problem &problem)
+    {
+      if (!context.export_lcp)
+        return;
+      const auto timer = context.section("export LCP");
+      lcp::write_problem(problem, context.output_directory.string());
+    }
+
+    /// With Output/Write solution: u and lambda of the LCP (u.txt,
+    /// lambda.txt, as the lcp scene does), in the unknowns of the exported
+    /// LCP.
+    void
+    write_solution_if_requested(const RunContext    &context,
+                                const lcp::Solution &solution)
+    {
+      if (!context.write_solution)
+        return;
+      const auto        timer     = context.section("write solution");
+      const std::string directory = context.output_directory.string();
+      lcp::write_vector(solution.u, directory + "/u.txt");
+      lcp::write_vector(solution.lambda, directory + "/lambda.txt");
+    }
+  } // namespace
+
+  Scene::Scene(std::string name)
+    : scene_name(std::move(name))
+  {}
+
+  void
+  Scene::set_up(RunContext &context)
+  {
+    {
+      const auto timer = context.section("make grid");
+      make_grid(context);
+    }
+    const auto timer = context.section("setup system");
+    setup_system(context);
   }
 
-  const std::vector<SceneInfo> &
-  SceneRegistry::all()
+  void
+  Scene::assemble(RunContext &context)
   {
-    return entries();
-  }
-
-  std::string
-  SceneRegistry::selection()
-  {
-    std::string result;
-    for (const auto &info : entries())
-      result += (result.empty() ? "" : "|") + info.name;
-    return result;
-  }
-
-  lcp::SolverParameters
-  solver_parameters(const RunContext &context, const Scene &scene)
-  {
-    lcp::SolverParameters parameters = context.solver;
-    if (parameters.pdas.start == lcp::SolverParameters::PdasStart::automatic)
-      parameters.pdas.start =
-        scene.auto_pdas_start_all_active() ?
-          lcp::SolverParameters::PdasStart::all_active :
-          lcp::SolverParameters::PdasStart::zero;
-    return parameters;
+    const auto timer = context.section("assemble system");
+    assemble_system(context);
+    lcp::check_and_normalise(lcp_problem);
   }
 
   lcp::Report
-  solve(RunContext         &context,
-        const Scene        &scene,
-        const lcp::Problem &problem,
-        lcp::Solution      &solution)
+  Scene::run(RunContext &context)
   {
-    dealii::TimerOutput::Scope scope(*context.timer, "solve");
-    if (context.progress != nullptr)
-      *context.progress << "  solving with " << context.solver.method
-                        << (context.solver.schur_complement ?
-                              " on the Schur complement" :
-                              "")
-                        << std::endl;
-    lcp::Report report = lcp::solve_lcp(problem,
-                                        solver_parameters(context, scene),
-                                        solution,
-                                        context.progress,
-                                        scene.auto_regularisation());
-    check_work(problem, solution, report);
+    set_up(context);
+    assemble(context);
+    export_lcp_if_requested(context, lcp_problem);
+
+    lcp::Report report;
+    {
+      const auto timer = context.section("solve");
+      initial_solution(context);
+      if (context.progress != nullptr)
+        *context.progress << "  solving with " << context.solver.method
+                          << (context.solver.schur_complement ?
+                                " on the Schur complement" :
+                                "")
+                          << std::endl;
+      report = lcp::solve_lcp(lcp_problem,
+                              context.solver,
+                              lcp_solution,
+                              context.progress);
+      check_work(lcp_problem, lcp_solution, report);
+    }
+    write_solution_if_requested(context, lcp_solution);
+    {
+      const auto timer = context.section("postprocess");
+      postprocess(context, report);
+    }
+    if (context.write_vtu)
+      {
+        const auto timer = context.section("output results");
+        output_results(context);
+      }
+
+    if (context.out != nullptr)
+      print_summary(*context.out, report);
+    JsonObject summary = summary_base(context, name(), lcp_problem, report);
+    add_summary(summary);
+    summary.write_file((context.output_directory / "summary.json").string());
     return report;
   }
+
+  void
+  Scene::make_grid(RunContext &)
+  {}
+
+  void
+  Scene::setup_system(RunContext &)
+  {}
+
+  void
+  Scene::initial_solution(RunContext &)
+  {}
+
+  void
+  Scene::postprocess(const RunContext &, lcp::Report &)
+  {}
+
+  void
+  Scene::output_results(const RunContext &) const
+  {}
+
+  void
+  Scene::print_summary(std::ostream &out, const lcp::Report &report) const
+  {
+    print_solver_summary(out, lcp_problem, report);
+  }
+
+  void
+  Scene::add_summary(JsonObject &) const
+  {}
 
   void
   check_work(const lcp::Problem  &problem,
@@ -118,86 +262,12 @@ namespace unilateral
       }
   }
 
-  JsonObject
-  summary_base(const RunContext   &context,
-               const std::string  &scene,
-               const lcp::Problem &problem,
-               const lcp::Report  &report)
-  {
-    JsonObject summary;
-    summary.set("scene", scene)
-      .set("run_name", context.run_name)
-      .set("solver", report.solver)
-      .set("schur_complement", context.solver.schur_complement)
-      .set("n_unknowns", problem.size())
-      .set("n_constraints", problem.n_constrained())
-      .set("n_active", report.n_active)
-      .set("iterations", report.iterations)
-      .set("projection_iterations", report.projection_iterations)
-      .set("continuation_stages", report.continuation_stages)
-      .set("regularisation", report.regularisation)
-      .set("converged", report.converged())
-      .set("status", lcp::to_string(report.status))
-      .set("message", report.message)
-      .set("energy", report.energy);
-    JsonObject &kkt = summary.object("kkt");
-    kkt.set("stationarity", report.kkt.stationarity)
-      .set("primal_feasibility", report.kkt.primal_feasibility)
-      .set("dual_feasibility", report.kkt.dual_feasibility)
-      .set("complementarity", report.kkt.complementarity)
-      .set("max", report.kkt.max());
-
-    JsonObject &time = summary.object("time");
-    if (context.timer != nullptr)
-      for (const auto &[section, seconds] : context.timer->get_summary_data(
-             dealii::TimerOutput::total_wall_time))
-        time.set(section, seconds);
-    JsonObject &solver_time = time.object("solver");
-    for (const auto &[phase, seconds] : report.phase_times)
-      solver_time.set(phase, seconds);
-
-    // How often each stage ran: tests check from these, not from times, that
-    // a stage a run does not need never ran.
-    JsonObject &calls = summary.object("calls");
-    if (context.timer != nullptr)
-      for (const auto &[section, n] :
-           context.timer->get_summary_data(dealii::TimerOutput::n_calls))
-        calls.set(section, static_cast<unsigned int>(n));
-    for (const auto &[phase, seconds] : report.phase_times)
-      calls.set("solver: " + phase, 1u);
-
-    JsonObject &counters = summary.object("counters");
-    counters.set("orderings", report.counters.orderings)
-      .set("symbolic_analyses", report.counters.symbolic_analyses)
-      .set("numeric_factorisations", report.counters.numeric_factorisations)
-      .set("reused_factorisations", report.counters.reused_factorisations)
-      .set("modified_factorisations",
-           report.counters.modified_factorisations)
-      .set("factor_row_modifications",
-           report.counters.factor_row_modifications)
-      .set("resolved_subsets", report.counters.resolved_subsets)
-      .set("resolved_indices", report.counters.resolved_indices)
-      .set("cg_iterations", report.counters.cg_iterations)
-      .set("triangular_solves", report.counters.triangular_solves)
-      .set("partial_forward_solves",
-           report.counters.partial_forward_solves)
-      .set("centrality_correctors", report.counters.centrality_correctors)
-      .set("matrix_vector_products", report.counters.matrix_vector_products);
-    return summary;
-  }
-
-  void
-  write_summary(const RunContext &context, const JsonObject &summary)
-  {
-    summary.write_file((context.output_directory / "summary.json").string());
-  }
-
   void
   print_solver_summary(std::ostream       &out,
                        const lcp::Problem &problem,
                        const lcp::Report  &report)
   {
-    const auto flags = out.flags();
+    const auto flags     = out.flags();
     const auto precision = out.precision();
     out << "  LCP: " << problem.size() << " unknowns, "
         << problem.n_constrained() << " constraints\n"
@@ -208,8 +278,8 @@ namespace unilateral
     out << ", " << report.n_active << " active\n";
     if (!report.message.empty())
       out << "  note: " << report.message << "\n";
-    out << std::scientific << std::setprecision(6)
-        << "  energy " << report.energy << "\n"
+    out << std::scientific << std::setprecision(6) << "  energy "
+        << report.energy << "\n"
         << std::setprecision(1) << "  KKT residuals: stationarity "
         << report.kkt.stationarity << ", primal "
         << report.kkt.primal_feasibility << ", dual "
@@ -217,26 +287,5 @@ namespace unilateral
         << report.kkt.complementarity << "\n";
     out.flags(flags);
     out.precision(precision);
-  }
-
-  void
-  export_lcp_if_requested(const RunContext &context, const lcp::Problem &problem)
-  {
-    if (!context.export_lcp)
-      return;
-    dealii::TimerOutput::Scope scope(*context.timer, "export LCP");
-    lcp::write_problem(problem, context.output_directory.string());
-  }
-
-  void
-  write_solution_if_requested(const RunContext    &context,
-                              const lcp::Solution &solution)
-  {
-    if (!context.write_solution)
-      return;
-    dealii::TimerOutput::Scope scope(*context.timer, "write solution");
-    const std::string directory = context.output_directory.string();
-    lcp::write_vector(solution.u, directory + "/u.txt");
-    lcp::write_vector(solution.lambda, directory + "/lambda.txt");
   }
 } // namespace unilateral

@@ -98,15 +98,15 @@ main()
     // The paper's PDAS (no safeguards: the exact resolution of the front
     // would finish this chain within the limit).
     SolverParameters plain_pdas = parameters;
-    plain_pdas.pdas.safeguard   = 0;
+    plain_pdas.set("PDAS/Safeguard", "0");
     report_solver("pdas without safeguards limited to 2 iterations",
-                  solve_with(problem, {"pdas"}, u, -1, plain_pdas));
+                  solve_with(problem, method("pdas"), u, -1, plain_pdas));
     report_solver("psor limited to 2 sweeps",
-                  solve_with(problem, {"psor"}, u, -1, parameters));
+                  solve_with(problem, method("psor"), u, -1, parameters));
     report_solver("block_pivoting limited to 2 iterations",
-                  solve_with(problem, {"block_pivoting"}, u, -1, parameters));
+                  solve_with(problem, method("block_pivoting"), u, -1, parameters));
     report_solver("pdas without limit",
-                  solve_with(problem, {"pdas"}, u));
+                  solve_with(problem, method("pdas"), u));
   }
 
   // LCPs without a solution: Graves says so.
@@ -117,13 +117,13 @@ main()
     b << 1; // lambda = -1 whatever u is
     Vector u;
     report_solver("graves, A = 0, b = 1",
-                  solve_with(make_problem(A, b, {0}, {0}), {"graves"}, u));
+                  solve_with(make_problem(A, b, {0}, {0}), method("graves"), u));
     DenseMatrix A2(2, 2);
     A2 << 1, -1, -1, 1;
     Vector b2(2);
     b2 << 1, 1; // lambda_1 + lambda_2 = -2 < 0 always
     report_solver("graves, lambda_1 + lambda_2 = -2",
-                  solve_with(make_problem(A2, b2, {0, 1}, {0, 0}), {"graves"},
+                  solve_with(make_problem(A2, b2, {0, 1}, {0, 0}), method("graves"),
                              u));
   }
 
@@ -139,7 +139,7 @@ main()
     // closes the constraint that the free motion moves and certifies
     // u = (0, -1).
     const Report unregularised =
-      solve_with(make_problem(A, b, {0}, {0}), {"pdas"}, u, 0);
+      solve_with(make_problem(A, b, {0}, {0}), method("pdas"), u, 0);
     report_solver("pdas, unregularised, floating body without net load",
                   unregularised);
     std::cout << "  a solution (KKT <= 1e-10): "
@@ -149,11 +149,11 @@ main()
     Vector b_off(2);
     b_off << 1, 0;
     report_solver("pdas, unregularised, floating body pulled off",
-                  solve_with(make_problem(A, b_off, {0}, {0}), {"pdas"}, u, 0));
+                  solve_with(make_problem(A, b_off, {0}, {0}), method("pdas"), u, 0));
     // With regularisation and the projection one of the family is found,
     // and certified.
     const Report regularised =
-      solve_with(make_problem(A, b, {0}, {0}), {"pdas"}, u, 1e-9);
+      solve_with(make_problem(A, b, {0}, {0}), method("pdas"), u, 1e-9);
     report_solver("pdas, regularised, floating body without net load",
                   regularised);
     std::cout << "  a solution (KKT <= 1e-10): "
@@ -163,7 +163,7 @@ main()
     Vector b2(2);
     b2 << 1, 1;
     report_solver("Schur complement with A_EE = 0",
-                  solve_with(make_problem(A2, b2, {0}, {0}), {"pdas", true}, u));
+                  solve_with(make_problem(A2, b2, {0}, {0}), {&SolverRegistry::get("pdas"), true}, u));
   }
 
   // Bad input through the application.

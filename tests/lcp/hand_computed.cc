@@ -93,7 +93,7 @@ main()
           const Report report =
             solve_with(problem, method, u, p.semidefinite ? 1e-9 : -1);
           const Vector lambda = multiplier(problem, u);
-          std::cout << "  " << std::setw(19) << std::left << method.label()
+          std::cout << "  " << std::setw(46) << std::left << method.label()
                     << to_string(report.status) << ", u exact: "
                     << yes_no(relative_difference(u, p.u_star) < 1e-10)
                     << ", lambda exact: "

@@ -83,17 +83,18 @@ main()
 
   // The reference: PDAS, certified by its own KKT residuals.
   Vector       reference;
-  const Report pdas = solve_with(problem, {"pdas"}, reference);
+  const Report pdas = solve_with(problem, {&default_method()}, reference);
   const double fraction = double(pdas.n_active) / problem.size();
   std::cout << "pdas: " << to_string(pdas.status)
             << ", KKT <= 1e-10: " << yes_no(pdas.kkt.max() <= 1e-10)
             << ", contact fraction between 0.25 and 0.42: "
             << yes_no(fraction > 0.25 && fraction < 0.42) << "\n";
 
-  // The other methods that scale to this size (psor and lssnn need O(n)
-  // sweeps or pivots, graves is dense: the small problems exercise them).
-  // Interior-point methods run twice: alone, where their stopping tests
-  // (the papers' tolerances) leave an error near 1e-5 that the KKT check must
+  // The other methods that scale to this size (stationary iterations need
+  // O(n) sweeps, single pivots O(n) pivots, dense ones O(n^2) memory: the
+  // small problems exercise them), with their variants. Approximate ones
+  // (interior points) run twice: alone, where their stopping tests (the
+  // papers' tolerances) leave an error near 1e-5 that the KKT check must
   // report as "inaccurate", and with the projection step, which is exact.
   struct Run
   {
@@ -102,18 +103,28 @@ main()
     double      tolerance;
     std::string label;
   };
-  for (const Run &run :
-       std::vector<Run>{{{"pdpc"}, false, 1e-4, "alone"},
-                        {{"pdpc"}, true, 1e-8, "+ projection"},
-                        {{"interior_point"}, false, 1e-4, "alone"},
-                        {{"interior_point"}, true, 1e-8, "+ projection"},
-                        {{"block_pivoting"}, false, 1e-8, ""}})
+  std::vector<Run> runs;
+  for (const Method &method : all_methods(false))
+    {
+      const SolverInfo &info = *method.info;
+      if (method.schur_complement || info.is_default || info.dense ||
+          info.stationary || info.single_pivot)
+        continue;
+      if (info.exact)
+        runs.push_back({method, true, 1e-8, ""});
+      else
+        {
+          runs.push_back({method, false, 1e-4, "alone"});
+          runs.push_back({method, true, 1e-8, "+ projection"});
+        }
+    }
+  for (const Run &run : runs)
     {
       SolverParameters parameters;
       parameters.projection = run.projection;
       Vector       u;
       const Report report = solve_with(problem, run.method, u, -1, parameters);
-      std::cout << "  " << std::setw(16) << std::left << run.method.label()
+      std::cout << "  " << std::setw(38) << std::left << run.method.label()
                 << std::setw(13) << run.label
                 << to_string(report.status) << ", agrees with pdas to "
                 << run.tolerance << ": "

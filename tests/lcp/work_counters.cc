@@ -423,7 +423,7 @@ main()
   {
     SolverParameters no_projection;
     no_projection.projection = false;
-    const Report psor = solve_with(problem, {"psor"}, u, 1e-2, no_projection);
+    const Report psor = solve_with(problem, method("psor"), u, 1e-2, no_projection);
     // Regularised and not projected, so the answer is honestly reported
     // "inaccurate" against the original problem.
     std::cout << "psor: " << to_string(psor.status)
@@ -440,7 +440,7 @@ main()
   // set, A instead of A + eps I) is solved with the regularised factor as a
   // preconditioner, not factorised anew.
   {
-    const Report pdas = solve_with(problem, {"pdas"}, u, 1e-12);
+    const Report pdas = solve_with(problem, method("pdas"), u, 1e-12);
     std::cout << "pdas + projection: " << to_string(pdas.status)
               << ", projection iterations: " << pdas.projection_iterations
               << "\n  projection reused the regularised factor: "
@@ -473,10 +473,10 @@ main()
     for (const unsigned int safeguard : {0u, 10u})
       {
         SolverParameters parameters;
-        parameters.pdas.safeguard = safeguard;
+        parameters.set("PDAS/Safeguard", std::to_string(safeguard));
         const Report report =
           solve_with(make_problem(two_bodies, load, {0, 2}, {0, 0}),
-                     {"pdas"}, u, -1, parameters);
+                     method("pdas"), u, -1, parameters);
         std::cout << "pdas" << (safeguard == 0 ? " without safeguards" : "")
                   << ", eps = auto, singular A: " << to_string(report.status)
                   << ", regularised after all: "
@@ -493,7 +493,7 @@ main()
     SolverParameters parameters;
     parameters.projection = false;
     const Report ip =
-      solve_with(problem, {"interior_point"}, u, -1, parameters);
+      solve_with(problem, method("interior_point"), u, -1, parameters);
     std::cout << "interior point: " << ip.iterations
               << " Newton systems, one symbolic analysis: "
               << yes_no(ip.counters.symbolic_analyses == 1)
@@ -524,14 +524,17 @@ main()
     check_and_normalise(obstacle);
 
     SolverParameters parameters;
-    parameters.projection                           = false;
-    parameters.interior_point.centrality_correctors = 0;
-    const Method predictor_corrector{"interior_point", false, true};
+    parameters.projection = false;
+    parameters.set("Interior point/Centrality correctors", "0");
+    const Method predictor_corrector{
+      &SolverRegistry::get("interior_point"),
+      false,
+      &SolverRegistry::get("interior_point").variants.front()};
     Vector       exact_u, mehrotra_u, gondzio_u;
-    solve_with(obstacle, {"pdas"}, exact_u, 0);
+    solve_with(obstacle, method("pdas"), exact_u, 0);
     const Report mehrotra =
       solve_with(obstacle, predictor_corrector, mehrotra_u, 0, parameters);
-    parameters.interior_point.centrality_correctors = 2;
+    parameters.set("Interior point/Centrality correctors", "2");
     const Report gondzio =
       solve_with(obstacle, predictor_corrector, gondzio_u, 0, parameters);
     // Solves: two per iteration, one for the start, one per corrector
@@ -565,8 +568,8 @@ main()
 
   // Optional phases run only when asked for.
   {
-    const Report full = solve_with(problem, {"pdas"}, u, 1e-12);
-    const Report schur = solve_with(problem, {"pdas", true}, u, 1e-12);
+    const Report full = solve_with(problem, method("pdas"), u, 1e-12);
+    const Report schur = solve_with(problem, {&SolverRegistry::get("pdas"), true}, u, 1e-12);
     std::cout << "Schur complement formed only when asked: "
               << yes_no(!has_phase(full, "schur complement") &&
                         has_phase(schur, "schur complement"))
@@ -574,7 +577,7 @@ main()
     SolverParameters no_projection;
     no_projection.projection = false;
     const Report unprojected =
-      solve_with(problem, {"pdas"}, u, 1e-12, no_projection);
+      solve_with(problem, method("pdas"), u, 1e-12, no_projection);
     std::cout << "projection only when asked: "
               << yes_no(full.projected && !unprojected.projected &&
                         !has_phase(unprojected, "projection"))
@@ -582,7 +585,7 @@ main()
     const Report definite = solve_with(
       make_problem(DenseMatrix::Identity(3, 3), Vector::Ones(3), {0, 1, 2},
                    {0, 0, 0}),
-      {"pdas"}, u);
+      method("pdas"), u);
     std::cout << "no regularisation or projection for a definite matrix "
                  "with eps = auto: "
               << yes_no(definite.regularisation == 0 && !definite.projected)

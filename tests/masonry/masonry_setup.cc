@@ -127,7 +127,8 @@ namespace
   {
     MasonryScene scene(parse(prm_text(geometry, m, element)).parameters);
     RunContext   context;
-    const Sizes &s        = scene.set_up(context);
+    scene.set_up(context);
+    const Sizes &s        = scene.sizes();
     const auto  &change   = scene.change_of_variables();
     const auto  &contacts = scene.contact_set();
 

@@ -6,18 +6,25 @@
 // as PDAS. The status is not printed: where contacts are degenerate it is
 // decided by round-off (see below).
 //
-// Runs left out (printed with the reason, never silently):
-//  - psor at m = 20 for running bond and laminae: 100000 sweeps do not reach the paper's tolerance
-//    n * machine epsilon for running bond and laminae (the paper needed
-//    264 s to 6345 s there), and a minute each is over this test's budget;
-//  - lssnn and graves on the Schur complement for running bond at m = 20:
-//    90 s and 2 min (graves then stops on cycling through round-off).
+// Every registered method and variant runs, on the full LCP (a dense one
+// only on the Schur complement) and on the Schur complement; the runs left
+// out are printed with the reason, never silently, and chosen by the
+// methods' registered properties:
+//  - stationary iterations (their sweeps grow like the condition number)
+//    on the running bond and laminae at m = 20: 100000 sweeps do not reach
+//    the paper's tolerance n * machine epsilon (the paper needed 264 s to
+//    6345 s there), and a minute each is over this test's budget; and on
+//    the dense Schur complement, where each sweep costs n_c^2;
+//  - methods that move one index per iteration, on the Schur complement of
+//    the running bond at m = 20: 90 s and 2 min (graves then stops on
+//    cycling through round-off).
 // Stack bond has degenerate contacts (vertical joints at the top, closed
 // with zero force; their number is printed), on which the projection step
 // (PDAS on A) may cycle until its iteration limit, with status "iteration
 // limit", although its iterate solves the LCP to round-off; whether it
 // cycles depends on round-off. See the README of benchmarks/masonry_tables.
 // There the iteration limit is lowered to 100 to keep the test short.
+#include "../registered_methods.h"
 #include "masonry_test_tools.h"
 
 #include <cmath>
@@ -27,35 +34,35 @@ using namespace masonry_test;
 
 namespace
 {
-  struct Method
-  {
-    std::string name;
-    bool        schur_complement;
-    bool        predictor_corrector = false; ///< interior_point's variant
-  };
+  using Method = registered_methods::MethodRun;
 
-  std::string
-  label(const Method &method)
+  // Every registered method and variant but the reference (the default
+  // method on the full LCP).
+  std::vector<Method>
+  all_methods()
   {
-    return method.name + (method.schur_complement ? " (Schur)" : "") +
-           (method.predictor_corrector ? " (predictor-corrector)" : "");
+    std::vector<Method> methods;
+    for (const Method &method : registered_methods::all(true))
+      if (method.schur_complement || !method.info->is_default)
+        methods.push_back(method);
+    return methods;
   }
 
   // Why a run is left out, or "" if it runs.
   std::string
   left_out(const Method &method, const std::string &geometry, unsigned int m)
   {
+    const lcp::SolverInfo &info = *method.info;
+    if (info.stationary && method.schur_complement)
+      return "a stationary iteration on the dense Schur complement: each of "
+             "its many sweeps costs n_c^2";
     if (m < 20)
       return "";
-    if (method.name == "psor" && !method.schur_complement &&
-        geometry != "stack bond")
+    if (info.stationary && geometry != "stack bond")
       return "100000 sweeps are not enough and take a minute";
     if (geometry == "running bond" && method.schur_complement &&
-        method.name == "lssnn")
-      return "takes 90 s";
-    if (geometry == "running bond" && method.schur_complement &&
-        method.name == "graves")
-      return "takes 2 min and stops cycling through round-off";
+        info.single_pivot)
+      return "one index per iteration on the Schur complement takes minutes";
     return "";
   }
 
@@ -64,23 +71,16 @@ namespace
              const unsigned int m,
              const Method      &method)
   {
-    const std::string prm =
-      "subsection Masonry\n  set Geometry = " + geometry +
-      "\n  set Blocks per side = " + std::to_string(m) +
-      "\nend\nsubsection Solver\n  set Method = " + method.name +
-      "\n  set Schur complement = " +
-      (method.schur_complement ? "true" : "false") +
-      (method.predictor_corrector ?
-         "\n  subsection Interior point\n    set Variant = "
-         "predictor-corrector\n  end" :
-         "") +
-      "\nend\n";
+    const std::string prm = "subsection Masonry\n  set Geometry = " + geometry +
+                            "\n  set Blocks per side = " + std::to_string(m) +
+                            "\nend\nsubsection Solver\n" +
+                            method.prm_lines() + "end\n";
     Setup setup = parse(prm);
     // Stack bond: the projection step cycles on degenerate contacts until
     // its iteration limit (see above); 100 instead of 500 iterations save
-    // a minute and change nothing else (PSOR needs its thousands of sweeps,
-    // Graves its pivots).
-    if (geometry == "stack bond" && method.name != "psor" &&
+    // a minute and change nothing else (stationary iterations need their
+    // thousands of sweeps, the Schur complement's pivots theirs).
+    if (geometry == "stack bond" && !method.info->stationary &&
         !method.schur_complement)
       setup.solver.max_iterations = 100;
     return run(setup, "solvers");
@@ -90,20 +90,12 @@ namespace
 int
 main()
 {
-  const std::vector<Method> methods = {{"psor", false},
-                                       {"lssnn", false},
-                                       {"pdpc", false},
-                                       {"interior_point", false},
-                                       {"interior_point", false, true},
-                                       {"block_pivoting", false},
-                                       {"graves", true},
-                                       {"lssnn", true},
-                                       {"pdas", true},
-                                       {"pdpc", true}};
+  const std::vector<Method> methods = all_methods();
+  const Method reference_method{&lcp::default_method(), false};
   for (const std::string geometry : {"stack bond", "running bond", "laminae"})
     for (const unsigned int m : {5u, 10u, 20u})
       {
-        const Run  reference   = solve_with(geometry, m, {"pdas", false});
+        const Run  reference   = solve_with(geometry, m, reference_method);
         const auto reference_u = reference.scene->nodal_displacements();
         double     scale       = 0;
         for (const auto &node : reference_u)
@@ -123,7 +115,7 @@ main()
                   << " (n = " << reference.scene->sizes().n_unknowns
                   << ", n_c = " << reference.scene->sizes().n_constraints
                   << ", " << n_degenerate << " degenerate contacts):\n"
-                  << "  pdas: KKT <= 1e-10: "
+                  << "  " << reference_method.info->name << ": KKT <= 1e-10: "
                   << yes_no(reference.report.kkt.max() <= 1e-10) << "\n";
 
         for (const Method &method : methods)
@@ -131,7 +123,7 @@ main()
             const std::string reason = left_out(method, geometry, m);
             if (!reason.empty())
               {
-                std::cout << "  " << label(method) << ": not run, " << reason
+                std::cout << "  " << method.label() << ": not run, " << reason
                           << "\n";
                 continue;
               }
@@ -145,10 +137,11 @@ main()
                                                reference_u[i].displacement[d]));
             const double energy_difference =
               std::abs(result.report.energy - reference.report.energy);
-            std::cout << "  " << label(method) << ": KKT <= 1e-10: "
+            std::cout << "  " << method.label() << ": KKT <= 1e-10: "
                       << yes_no(result.report.kkt.max() <= 1e-10)
-                      << ", u = pdas: " << yes_no(difference <= 1e-8 * scale)
-                      << ", energy = pdas: "
+                      << ", u = " << reference_method.info->name << ": "
+                      << yes_no(difference <= 1e-8 * scale) << ", energy = "
+                      << reference_method.info->name << ": "
                       << yes_no(energy_difference <=
                                 1e-10 * std::abs(reference.report.energy))
                       << "\n";

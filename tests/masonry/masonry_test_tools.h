@@ -28,11 +28,11 @@ namespace masonry_test
   inline Setup
   parse(const std::string &prm_text)
   {
+    Setup                    setup;
     dealii::ParameterHandler prm;
     Parameters::declare_parameters(prm);
-    lcp::SolverParameters::declare_parameters(prm);
+    setup.solver.declare_parameters(prm);
     prm.parse_input_from_string(prm_text);
-    Setup setup;
     setup.parameters.parse_parameters(prm);
     setup.solver.parse_parameters(prm);
     return setup;
@@ -71,7 +71,8 @@ namespace masonry_test
   {
     MasonryScene scene(setup.parameters);
     RunContext   context;
-    return scene.set_up(context);
+    scene.set_up(context);
+    return scene.sizes();
   }
 
   inline const char *

@@ -61,15 +61,15 @@ namespace plate_runs
             const bool         write_vtu       = false,
             const std::string &solver_settings = "")
   {
+    unilateral::RunContext   context;
     dealii::ParameterHandler prm;
-    unilateral::lcp::SolverParameters::declare_parameters(prm);
+    context.solver.declare_parameters(prm);
     unilateral::plate::PlateScene::declare_parameters(prm);
     prm.parse_input_from_string("subsection Solver\n  set Method = " + method +
                                 "\n" + solver_settings +
                                 "end\nsubsection Plate\n" +
                                 plate_parameters + "end\n");
 
-    unilateral::RunContext context;
     context.run_name = name;
     context.solver.parse_parameters(prm);
     auto scene = std::make_unique<unilateral::plate::PlateScene>(prm);

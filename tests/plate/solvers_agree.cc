@@ -5,6 +5,7 @@
 // configurations of the paper's tables. A method that is not registered
 // makes the test fail (SolverRegistry throws), never skip.
 
+#include "../registered_methods.h"
 #include "plate_runs.h"
 
 #include "../test_tools.h"
@@ -15,11 +16,20 @@ using test_tools::verdict;
 
 namespace
 {
-  struct Method
+  using Method = registered_methods::MethodRun;
+
+  // Every registered method and variant (a dense one on the Schur
+  // complement only: the plate has unconstrained slopes), but the
+  // reference: the default method on the full LCP.
+  std::vector<Method>
+  all_methods()
   {
-    std::string name;
-    std::string settings; // extra lines for subsection Solver
-  };
+    std::vector<Method> methods;
+    for (const Method &method : registered_methods::all(true))
+      if (method.schur_complement || !method.info->is_default)
+        methods.push_back(method);
+    return methods;
+  }
 
   double
   relative_difference(const dealii::Vector<double> &a,
@@ -43,14 +53,8 @@ main()
     {"steel", "psi1", "f1", "10"},
     {"steel", "psi3", "f1", "10"},
     {"bronze", "psi3", "f1", "20"}};
-  const std::vector<Method> methods = {
-    {"interior_point", ""},
-    {"block_pivoting", ""},
-    {"pdpc", ""},
-    {"psor", ""},
-    {"lssnn", ""},
-    {"graves", "  set Schur complement = true\n"},
-    {"pdas", "  set Schur complement = true\n"}};
+  const std::string         reference_method = unilateral::lcp::default_method().name;
+  const std::vector<Method> methods          = all_methods();
 
   bool all = true;
   for (const auto &c : configurations)
@@ -59,24 +63,32 @@ main()
       const std::string  plate =
         plate_runs::paper_configuration(c[0], c[1], c[2], n);
       const std::string name = c[0] + "_" + c[1] + "_" + c[2] + "_" + c[3];
-      const auto reference   = plate_runs::run_plate(name + "_pdas", plate, "pdas");
+      const auto reference = plate_runs::run_plate(name + "_reference",
+                                                   plate,
+                                                   reference_method);
       std::cout << c[0] << " " << c[1] << " " << c[2] << " " << n << "x" << n
-                << ": pdas " << (reference.report.converged() ? "converged" : "FAILED")
+                << ": " << reference_method << " "
+                << (reference.report.converged() ? "converged" : "FAILED")
                 << ", cn = " << reference.results().n_contact << std::endl;
       all = all && reference.report.converged();
       for (const Method &method : methods)
         {
-          const auto run = plate_runs::run_plate(
-            name + "_" + method.name, plate, method.name, false, method.settings);
+          const auto run = plate_runs::run_plate(name + "_" +
+                                                   std::to_string(&method -
+                                                                  &methods[0]),
+                                                 plate,
+                                                 method.name(),
+                                                 false,
+                                                 method.prm_settings());
           const bool agree =
             run.report.converged() &&
             run.results().n_contact == reference.results().n_contact &&
             relative_difference(run.scene->nodal_values(),
                                 reference.scene->nodal_values()) < 1e-8;
           all = all && agree;
-          verdict("  " + method.name +
-                    (method.settings.empty() ? "" : " (Schur complement)") +
-                    ": converged, same cn, nodal DOFs within 1e-8 relative of pdas",
+          verdict("  " + method.label() +
+                    ": converged, same cn, nodal DOFs within 1e-8 relative of " +
+                    reference_method,
                   agree);
         }
     }

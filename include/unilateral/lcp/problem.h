@@ -43,6 +43,19 @@ namespace unilateral::lcp
     /// l_S: one lower bound per entry of `constrained`, in the same order.
     Vector lower_bound;
 
+    /**
+     * @name What the builder knows of the problem
+     * Not data of the LCP: they only choose the solvers' automatic settings.
+     */
+    /// @{
+    /// A is singular unless the constraints hold the bodies (blocks free to
+    /// move): 'Solver/Regularisation = auto' regularises from the start.
+    bool floating_bodies = false;
+    /// Most constraints are active at the solution (structures in contact
+    /// almost everywhere): 'Solver/PDAS/Start = auto' starts all active.
+    bool mostly_active = false;
+    /// @}
+
     Index
     size() const
     {

@@ -51,6 +51,10 @@ namespace unilateral::lcp
     /// each with the iteration's factor).
     unsigned int centrality_correctors  = 0;
     unsigned int matrix_vector_products = 0;
+
+    /// The work of another stage of the same solve, added.
+    Counters &
+    operator+=(const Counters &other);
   };
 
   /**
@@ -86,6 +90,10 @@ namespace unilateral::lcp
 
     void
     add_time(const std::string &phase, double seconds);
+
+    /// The phase times of @p other, each named with @p prefix in front.
+    void
+    add_times(const Report &other, const std::string &prefix = "");
 
     double
     total_time() const;

@@ -1,12 +1,15 @@
 #pragma once
 
+#include <unilateral/base/registry.h>
 #include <unilateral/lcp/problem.h>
 #include <unilateral/lcp/report.h>
 
 #include <functional>
 #include <iosfwd>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -14,19 +17,90 @@ namespace dealii
   class ParameterHandler;
 }
 
+/**
+ * The solver layer's plugin interface. Every LCP method lives in one file
+ * under source/lcp/solvers/: its algorithm, its parameters (a subsection of
+ * "Solver" that it declares and parses itself) and its registration, which
+ * states as data what the driver needs to know of it (whether it needs a
+ * definite matrix, whether its answer is exact, what follows when it fails).
+ * The driver (solve_lcp.h), the parameter file and the tests learn about
+ * methods from the registry only.
+ */
 namespace unilateral::lcp
 {
   /**
-   * Every option of every algorithm, with the papers' defaults. Declared in
-   * the parameter file as subsection "Solver".
+   * The options of one method, in its own subsection of "Solver". A method's
+   * parameters derive from this (through MethodParametersBase), keep their
+   * defaults as member initialisers, and bind each member to an entry with
+   * ParameterHandler::add_parameter: the default --print-parameters shows is
+   * then the member's initial value, written once.
    */
-  struct SolverParameters
+  class MethodParameters
   {
-    std::string method = "pdas";
+  public:
+    virtual ~MethodParameters() = default;
+
+    virtual std::unique_ptr<MethodParameters>
+    clone() const = 0;
+
+    /// Declare the entries in the current subsection, bound to the members.
+    virtual void
+    add_parameters(dealii::ParameterHandler &prm) = 0;
+
+    /**
+     * What a pattern cannot express (an open interval). Throws InputError
+     * naming the parameter; @p section is the subsection's path
+     * ("Solver/PDAS").
+     */
+    virtual void
+    check(const std::string &section) const;
+  };
+
+  /// clone() for a method's parameters @p Derived.
+  template <typename Derived>
+  class MethodParametersBase : public MethodParameters
+  {
+  public:
+    std::unique_ptr<MethodParameters>
+    clone() const override
+    {
+      return std::make_unique<Derived>(static_cast<const Derived &>(*this));
+    }
+  };
+
+  /// The parameters of a method that has none.
+  class NoParameters : public MethodParametersBase<NoParameters>
+  {
+  public:
+    void
+    add_parameters(dealii::ParameterHandler &) override
+    {}
+  };
+
+  /**
+   * The options of a solve: those every method shares (subsection "Solver")
+   * and each registered method's own (its subsection inside "Solver"), all
+   * at their defaults until parsed or set.
+   */
+  class SolverParameters
+  {
+  public:
+    /// The default method, and every method's options at their defaults.
+    SolverParameters();
+
+    SolverParameters(const SolverParameters &other);
+
+    SolverParameters &
+    operator=(const SolverParameters &other);
+
+    ~SolverParameters();
+
+    /// The selected method ('Solver/Method').
+    std::string method;
     /// Solve the reduced Schur-complement LCP (Ainsworth-Mihai 3.13-3.18).
     bool schur_complement = false;
     /// Regularisation eps relative to the mean diagonal of A; negative means
-    /// "auto" (the scene's choice).
+    /// "auto" (see Problem::floating_bodies).
     double regularisation = -1;
     bool   projection     = true;
     /// 0 means each method's own default.
@@ -36,69 +110,35 @@ namespace unilateral::lcp
     /// Final check: relative KKT residuals above this make a run "inaccurate".
     double kkt_tolerance = 1e-8;
 
-    struct
-    {
-      double omega     = 0; ///< 0: 2 / (1 + sin(pi / n))
-      double tolerance = 0; ///< 0: n * machine epsilon
-    } psor;
+    /// The options of the registered method @p name.
+    const MethodParameters &
+    of(const std::string &name) const;
 
-    enum class PdasStart
-    {
-      automatic, ///< the scene's choice (zero when there is no scene)
-      zero,      ///< u0 = 0, as Ainsworth & Mihai
-      all_active ///< u0 minimises the energy with every bound active
-    };
+    /**
+     * Set one option of a method as a parameter file would: @p entry is
+     * "<subsection>/<entry>" ("PDAS/Safeguard", "Interior point/Variant").
+     * Throws InputError if there is no such entry or the value does not
+     * match its pattern.
+     */
+    void
+    set(const std::string &entry, const std::string &value);
 
-    struct
-    {
-      double    tau   = 1e-3;
-      PdasStart start = PdasStart::automatic;
-      /// Relative rounding tolerance of the active-set test: an index moves
-      /// only if it violates its side by more than this times the size of
-      /// the terms of its multiplier (a closed contact with zero force can
-      /// otherwise flip sides on round-off forever).
-      double round_off = 1e-12;
-      /// Judice-Pires safeguard: after this many iterations without fewer
-      /// violations than the best so far, change one index at a time by
-      /// Murty's least-index rule until there are fewer (finite termination
-      /// for positive definite A). 0 switches it off (the paper's PDAS).
-      unsigned int safeguard = 10;
-    } pdas;
-
-    struct
-    {
-      double initial_point   = 1e-2; ///< u0 = eps e, Sigma0 = -eps e
-      double tolerance_gap   = 0;    ///< tol1; 0: n_c * machine epsilon
-      double tolerance_residual = 0; ///< tol2; 0: n * sqrt(machine epsilon)
-      bool   diagonal_scaling = true;
-      /// Fraction of a step to the boundary that is taken (1: the paper).
-      double step_to_boundary = 0.9995;
-    } pdpc;
-
-    struct
-    {
-      double centering               = 0.1;     ///< delta in (42)
-      double step_factor             = 0.99995; ///< beta in (50)
-      double residual_tolerance      = 1e-10;   ///< epsilon_1 in (55)
-      double complementarity_tolerance = 1e-8;  ///< epsilon_2 in (56)
-      /// Mehrotra's predictor-corrector instead of the paper's fixed
-      /// centring (the hand-over from cycling PDAS always uses it).
-      bool   predictor_corrector = false;
-      /// Gondzio's centrality correctors per predictor-corrector iteration.
-      unsigned int centrality_correctors = 2;
-    } interior_point;
-
-    struct
-    {
-      unsigned int p         = 10;
-      double       tolerance = 1e-6; ///< epsilon in (67)
-    } block_pivoting;
-
-    static void
+    /**
+     * Declare subsection "Solver" with every method's subsection. The
+     * methods' entries are bound to this object's options
+     * (ParameterHandler::add_parameter): parsing a file into @p prm fills
+     * them, and parse_parameters() then reads the shared ones. This object
+     * must outlive @p prm's parsing.
+     */
+    void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+  private:
+    /// One entry per registered method, keyed by its name.
+    std::map<std::string, std::unique_ptr<MethodParameters>> methods;
   };
 
   /**
@@ -126,20 +166,77 @@ namespace unilateral::lcp
   protected:
     /// max_iterations if set, else @p method_default.
     unsigned int
-    iteration_limit(unsigned int method_default) const
+    iteration_limit(const unsigned int method_default) const
     {
       return parameters.max_iterations > 0 ? parameters.max_iterations :
                                              method_default;
     }
 
+    /// The shared options; a method's own come to its constructor.
     const SolverParameters &parameters;
   };
 
-  /// What the registry knows about a method.
+  /**
+   * What the driver does when an attempt with a method ends with a given
+   * status, declared by the method (see SolverInfo::follow_ups).
+   */
+  struct FollowUp
+  {
+    enum class Kind
+    {
+      /// Continue with another method from its own start, in place of this
+      /// one (PDAS that cycles continues from the interior point): the
+      /// iterations and work of both count, the answer is the other's.
+      hand_over,
+      /// Check this method's claim with another method (Graves' "no
+      /// solution" with PDAS): if that one solves the LCP, its answer is
+      /// given and the note says why.
+      verification
+    };
+
+    Kind   kind = Kind::hand_over;
+    /// The status of the attempt that calls for it.
+    Status when = Status::iteration_limit;
+    /// Only at the method's default iteration limit: a limit the user set
+    /// is the user's answer.
+    bool only_at_default_limit = false;
+    /// The registered name of the method that follows.
+    std::string method;
+    /// Options set for it, as "<subsection>/<entry>" and value.
+    std::vector<std::pair<std::string, std::string>> settings;
+  };
+
+  /// Options of a method worth running as a method of their own.
+  struct Variant
+  {
+    /// A short name ("predictor-corrector").
+    std::string name;
+    /// As "<subsection>/<entry>" and value.
+    std::vector<std::pair<std::string, std::string>> settings;
+  };
+
+  /**
+   * What the registry knows about a method: named properties, set by the
+   * method's own file (a static properties() function of its class).
+   */
   struct SolverInfo
   {
+    /// For the registry's messages.
+    static constexpr const char *parameter = "Solver/Method";
+    static constexpr const char *kind      = "method";
+
     std::string name;
+    /// The name in prose, as the papers write it ("PDAS"), for messages.
+    std::string label;
     std::string description;
+    /// The method's own parameter subsection inside "Solver"; empty if it
+    /// has no options.
+    std::string subsection;
+    /// Its default iteration limit in words, for the help of 'Maximum
+    /// iterations' ("500", "10|S| + 100").
+    std::string default_iterations;
+    /// The default of 'Solver/Method' (exactly one method sets it).
+    bool is_default = false;
     /// PSOR, LSSNN, PDAS need A + eps I (and the projection step) when A is
     /// only semidefinite; interior-point methods and Graves do not.
     bool needs_definite_matrix = false;
@@ -150,77 +247,77 @@ namespace unilateral::lcp
     /// projection step afterwards when 'Projection' is on.
     bool exact = true;
     /// The relative eps 'Regularisation = auto' uses at least, when the
-    /// scene needs regularisation (0: the scene's value).
+    /// problem needs regularisation.
     double preferred_regularisation = 0;
-    /// Starts from a given iterate u (PDAS, PSOR); the others ignore it.
+    /// Starts from a given iterate u; the others ignore it.
     bool warm_start = false;
-    std::function<std::unique_ptr<Solver>(const SolverParameters &)> create;
+    /// A stationary iteration (PSOR): the iterations it needs grow like the
+    /// condition number of A, very many on ill-conditioned problems.
+    bool stationary = false;
+    /// Moves one index (or two) per iteration (LSSNN, Graves): at least as
+    /// many iterations as indices change side.
+    bool single_pivot = false;
+    /// The method of the projection step: exact, warm-started, it finishes
+    /// an approximate or regularised answer on A itself (exactly one method
+    /// sets it).
+    bool finishes_approximate_answers = false;
+    /// What follows an attempt with this method that ends with a given
+    /// status, in order; the first that applies is taken.
+    std::vector<FollowUp> follow_ups;
+    /// Its variants (the tests run each, beside the default).
+    std::vector<Variant> variants;
+
+    /// The method's parameters at their defaults (set by the registration).
+    std::function<std::unique_ptr<MethodParameters>()> make_parameters;
+    /// The method with the shared options and its own (set by the
+    /// registration).
+    std::function<std::unique_ptr<Solver>(const SolverParameters &,
+                                          const MethodParameters &)>
+      create;
   };
 
-  /// Registered methods, in registration order; adding one touches one file.
-  class SolverRegistry
-  {
-  public:
-    static bool
-    add(SolverInfo info);
+  using SolverRegistry = Registry<SolverInfo>;
 
-    /// Throws InputError naming the unknown method and the known ones.
-    static const SolverInfo &
-    get(const std::string &name);
+  /// The default method ('is_default').
+  const SolverInfo &
+  default_method();
 
-    static std::vector<std::string>
-    names();
-
-    /// "a|b|c" for Patterns::Selection.
-    static std::string
-    selection();
-
-    static std::string
-    documentation();
-
-  private:
-    static std::vector<SolverInfo> &
-    entries();
-  };
-
-#define UNILATERAL_REGISTER_SOLVER(                                              \
-  classname, name, description, definite, dense, exact, preferred_eps, warm)     \
-  namespace                                                                      \
-  {                                                                              \
-    const bool registered_##classname = ::unilateral::lcp::SolverRegistry::add( \
-      {name,                                                                     \
-       description,                                                              \
-       definite,                                                                 \
-       dense,                                                                    \
-       exact,                                                                    \
-       preferred_eps,                                                            \
-       warm,                                                                     \
-       [](const ::unilateral::lcp::SolverParameters &parameters)                 \
-         -> std::unique_ptr<::unilateral::lcp::Solver> {                         \
-         return std::make_unique<classname>(parameters);                         \
-       }});                                                                      \
-  }
+  /// The method of the projection step ('finishes_approximate_answers').
+  const SolverInfo &
+  projection_method();
 
   /**
-   * Solve @p problem with the method and options in @p parameters:
-   *  - methods that need a definite matrix get A + eps I (eps relative to the
-   *    mean diagonal; "auto" takes @p auto_regularisation, or the method's
-   *    preferred eps if larger) and then the projection step (PDAS on A from
-   *    u_eps, continued in eps if it meets a singular system) that recovers
-   *    the exact solution;
-   *    approximate methods (PSOR, interior point) get the projection too;
-   *  - with schur_complement, the reduced LCP on S is formed (dense) and
-   *    solved, and u_E recovered;
-   *  - the report gets KKT residuals, energy and active set of the final u
-   *    against the original problem, and the status is downgraded to
-   *    "inaccurate" if the method's own test passed but the KKT residuals
-   *    exceed kkt_tolerance.
-   * @p problem must have passed check_and_normalise().
+   * Register class @p Method, which provides
+   *   using Parameters = ...;   // a MethodParameters, or NoParameters
+   *   static SolverInfo properties();
+   *   Method(const SolverParameters &, const Parameters &);
    */
-  Report
-  solve_lcp(const Problem          &problem,
-            const SolverParameters &parameters,
-            Solution               &solution,
-            std::ostream           *progress            = nullptr,
-            double                  auto_regularisation = 0);
+  template <typename Method>
+  bool
+  register_solver()
+  {
+    SolverInfo info      = Method::properties();
+    info.make_parameters = []() -> std::unique_ptr<MethodParameters> {
+      return std::make_unique<typename Method::Parameters>();
+    };
+    info.create = [](const SolverParameters &parameters,
+                     const MethodParameters &own) -> std::unique_ptr<Solver> {
+      return std::make_unique<Method>(
+        parameters, dynamic_cast<const typename Method::Parameters &>(own));
+    };
+    return SolverRegistry::add(std::move(info));
+  }
+
+#define UNILATERAL_REGISTER_SOLVER(Method)  \
+  namespace                                 \
+  {                                         \
+    const bool registered_solver_##Method = \
+      ::unilateral::lcp::register_solver<Method>(); \
+  }
 } // namespace unilateral::lcp
+
+namespace unilateral
+{
+  // One registry, in the core library (not one per translation unit).
+  extern template class Registry<lcp::SolverInfo>;
+} // namespace unilateral

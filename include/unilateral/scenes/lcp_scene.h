@@ -15,19 +15,28 @@ namespace unilateral
   class LcpScene : public Scene
   {
   public:
+    static constexpr const char *registered_name = "lcp";
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     explicit LcpScene(dealii::ParameterHandler &prm);
-
-    lcp::Report
-    run(RunContext &context) override;
 
     std::string
     size_parameters() const override
     {
       return "the LCP in 'LCP/Matrix file' = " + matrix_file;
     }
+
+  protected:
+    /// Read the LCP from its files.
+    void
+    assemble_system(RunContext &context) override;
+
+    /// u.txt, lambda.txt and active_set.txt: the scene's result, written
+    /// whatever 'Output/Write VTU' says.
+    void
+    postprocess(const RunContext &context, lcp::Report &report) override;
 
   private:
     std::string matrix_file;

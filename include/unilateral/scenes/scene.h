@@ -1,6 +1,7 @@
 #pragma once
 
 #include <unilateral/base/json_writer.h>
+#include <unilateral/base/registry.h>
 #include <unilateral/lcp/solver.h>
 
 #include <deal.II/base/timer.h>
@@ -9,6 +10,7 @@
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,31 +24,49 @@ namespace unilateral
   /**
    * What every run shares: where it writes, what it writes, how it reports
    * and the solver options. Built by the application from the parameter
-   * file's "Output" and "Solver" subsections.
+   * file's "Output" and "Solver" subsections; tests build their own.
    */
   struct RunContext
   {
     std::string           parameter_file;
     std::string           run_name;
     std::filesystem::path output_directory; ///< created before run()
-    bool                  write_vtu    = true;
-    bool                  export_lcp   = false;
+    bool                  write_vtu      = true;
+    bool                  export_lcp     = false;
     bool                  write_solution = false;
-    bool                  print_timings = true;
+    bool                  print_timings  = true;
     lcp::SolverParameters solver;
-    std::ostream         *out      = nullptr; ///< the screen
+    std::ostream         *out      = nullptr; ///< the screen, or null
     std::ostream         *progress = nullptr; ///< iteration lines, or null
-    dealii::TimerOutput  *timer    = nullptr; ///< one section per stage
+    dealii::TimerOutput  *timer    = nullptr; ///< one section per stage, or null
+
+    /// A timer section named @p name while the result lives (nothing if
+    /// there is no timer).
+    std::optional<dealii::TimerOutput::Scope>
+    section(const std::string &name) const;
+
+    /// A line of progress ("  <scene>: <text>"), if progress is on.
+    void
+    stage(const std::string &scene, const std::string &text) const;
   };
 
   /**
    * A scene builds an LCP from its parameters, solves it through the solver
-   * layer and writes its results. Each scene registers itself with
+   * layer and writes its results. run() is the one pipeline of every scene,
+   * in the deal.II tutorials' stages (each a timer section of the same name,
+   * so summary.json has the same keys for every scene):
+   *   make grid, setup system, assemble system (the scene's LCP, then
+   *   checked), [export LCP], solve (from the scene's start), [write
+   *   solution], postprocess, output results (with Output/Write VTU), then
+   *   the one-screen summary and summary.json.
+   * A scene fills in the stages it has. Each scene registers itself with
    * UNILATERAL_REGISTER_SCENE; the "Scene" selection is built from them.
    */
   class Scene
   {
   public:
+    explicit Scene(std::string name);
+
     virtual ~Scene() = default;
 
     /**
@@ -54,28 +74,18 @@ namespace unilateral
      * non-converged status into a nonzero exit code. Writes
      * output_directory/summary.json.
      */
-    virtual lcp::Report
-    run(RunContext &context) = 0;
+    lcp::Report
+    run(RunContext &context);
 
-    /**
-     * The regularisation a "Regularisation = auto" means for this scene
-     * (relative to the mean diagonal of A): 0 when A is definite.
-     */
-    virtual double
-    auto_regularisation() const
-    {
-      return 0;
-    }
+    /// make grid and setup system only, each in its timer section: the
+    /// problem's sizes without assembling or solving.
+    void
+    set_up(RunContext &context);
 
-    /**
-     * What "Solver/PDAS/Start = auto" means for this scene: true for "all
-     * active" (structures in contact almost everywhere), false for u0 = 0.
-     */
-    virtual bool
-    auto_pdas_start_all_active() const
-    {
-      return false;
-    }
+    /// assemble system (the scene's LCP, then checked by
+    /// lcp::check_and_normalise), in its timer section; after set_up().
+    void
+    assemble(RunContext &context);
 
     /**
      * The parameters that set the problem's size, with their values, for
@@ -84,10 +94,78 @@ namespace unilateral
      */
     virtual std::string
     size_parameters() const = 0;
+
+    /// The registered name ("masonry").
+    const std::string &
+    name() const
+    {
+      return scene_name;
+    }
+
+    /// After run(): the LCP that was solved.
+    const lcp::Problem &
+    problem() const
+    {
+      return lcp_problem;
+    }
+
+    /// After run(): its solution.
+    const lcp::Solution &
+    solution() const
+    {
+      return lcp_solution;
+    }
+
+  protected:
+    /// @name The stages of run(), in order
+    /// @{
+    virtual void
+    make_grid(RunContext &context);
+
+    virtual void
+    setup_system(RunContext &context);
+
+    /// Build lcp_problem (run() then checks it with check_and_normalise).
+    virtual void
+    assemble_system(RunContext &context) = 0;
+
+    /// The start of the solve in lcp_solution (default: none, each method's
+    /// own).
+    virtual void
+    initial_solution(RunContext &context);
+
+    /// Quantities of the solution, in the scene's terms; may change what
+    /// the report says in the scene's units.
+    virtual void
+    postprocess(const RunContext &context, lcp::Report &report);
+
+    /// The VTU/PVD files (or the scene's other field output).
+    virtual void
+    output_results(const RunContext &context) const;
+
+    /// The scene's lines of the one-screen summary, around the solver's.
+    virtual void
+    print_summary(std::ostream &out, const lcp::Report &report) const;
+
+    /// The scene's own keys of summary.json.
+    virtual void
+    add_summary(JsonObject &summary) const;
+    /// @}
+
+    /// The LCP the scene builds, and its solution.
+    lcp::Problem  lcp_problem;
+    lcp::Solution lcp_solution;
+
+  private:
+    const std::string scene_name;
   };
 
   struct SceneInfo
   {
+    /// For the registry's messages.
+    static constexpr const char *parameter = "Scene";
+    static constexpr const char *kind      = "scene";
+
     std::string name;
     std::string description;
     /// Declares the scene's own subsection (all scenes are always declared,
@@ -97,37 +175,20 @@ namespace unilateral
     std::function<std::unique_ptr<Scene>(dealii::ParameterHandler &)> create;
   };
 
-  class SceneRegistry
-  {
-  public:
-    static bool
-    add(SceneInfo info);
-
-    static const SceneInfo &
-    get(const std::string &name);
-
-    static const std::vector<SceneInfo> &
-    all();
-
-    static std::string
-    selection();
-
-  private:
-    static std::vector<SceneInfo> &
-    entries();
-  };
+  using SceneRegistry = Registry<SceneInfo>;
 
   /**
    * Register class @p classname, which must provide
+   *   static constexpr const char *registered_name = "...";
    *   static void declare_parameters(dealii::ParameterHandler &);
    *   explicit classname(dealii::ParameterHandler &);   // parse + validate
    */
-#define UNILATERAL_REGISTER_SCENE(classname, name, description)                \
+#define UNILATERAL_REGISTER_SCENE(classname, description)                      \
   namespace                                                                   \
   {                                                                           \
     const bool registered_scene_##classname =                                 \
       ::unilateral::SceneRegistry::add(                                       \
-        {name,                                                                \
+        {classname::registered_name,                                          \
          description,                                                         \
          [](dealii::ParameterHandler &prm) {                                  \
            classname::declare_parameters(prm);                                \
@@ -150,52 +211,15 @@ namespace unilateral
              const lcp::Solution &solution,
              lcp::Report         &report);
 
-  /// The context's solver options with the scene's choices filled in (the
-  /// PDAS start 'auto').
-  lcp::SolverParameters
-  solver_parameters(const RunContext &context, const Scene &scene);
-
-  /**
-   * Solve @p problem with the context's solver options, inside a timer
-   * section "solve", with the scene's automatic regularisation, then
-   * check_work().
-   */
-  lcp::Report
-  solve(RunContext          &context,
-        const Scene         &scene,
-        const lcp::Problem  &problem,
-        lcp::Solution       &solution);
-
-  /**
-   * The keys every summary.json has: scene, solver, n_unknowns,
-   * n_constraints, n_active, iterations, converged, status, message, kkt,
-   * energy, time (per phase: the solver's and the context timer's), calls
-   * (how often each stage ran; solver phases that ran count 1) and counters
-   * (the solver's work).
-   * Scenes add their own keys and then call write_summary().
-   */
-  JsonObject
-  summary_base(const RunContext   &context,
-               const std::string  &scene,
-               const lcp::Problem &problem,
-               const lcp::Report  &report);
-
-  void
-  write_summary(const RunContext &context, const JsonObject &summary);
-
   /// The deterministic part of the one-screen summary (no timings).
   void
   print_solver_summary(std::ostream       &out,
                        const lcp::Problem &problem,
                        const lcp::Report  &report);
+} // namespace unilateral
 
-  /// With Output/Export LCP: write the LCP in the lcp scene's file format.
-  void
-  export_lcp_if_requested(const RunContext &context, const lcp::Problem &problem);
-
-  /// With Output/Write solution: write u and lambda of the LCP (u.txt,
-  /// lambda.txt, as the lcp scene does), in the unknowns of the exported LCP.
-  void
-  write_solution_if_requested(const RunContext    &context,
-                              const lcp::Solution &solution);
+namespace unilateral
+{
+  // One registry, in the core library (not one per translation unit).
+  extern template class Registry<SceneInfo>;
 } // namespace unilateral

@@ -21,16 +21,62 @@
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/solver.h>
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <ostream>
 
 namespace unilateral::lcp
 {
   namespace
   {
+    /// Subsection "Solver/Block pivoting".
+    class BlockPivotingParameters
+      : public MethodParametersBase<BlockPivotingParameters>
+    {
+    public:
+      unsigned int p         = 10;
+      double       tolerance = 1e-6; ///< epsilon in (67)
+
+      void
+      add_parameters(dealii::ParameterHandler &prm) override
+      {
+        prm.add_parameter("p",
+                          p,
+                          "Block iterations allowed without a decrease of "
+                          "the infeasibility count before single pivots take "
+                          "over (Judice & Pires; the paper takes 10).",
+                          dealii::Patterns::Integer(1));
+        prm.add_parameter("Tolerance",
+                          tolerance,
+                          "epsilon of the infeasibility set H (eq. 67).",
+                          dealii::Patterns::Double(0));
+      }
+    };
+
     class BlockPivoting : public Solver
     {
     public:
-      using Solver::Solver;
+      using Parameters = BlockPivotingParameters;
+
+      BlockPivoting(const SolverParameters &parameters,
+                    const Parameters       &options)
+        : Solver(parameters)
+        , options(options)
+      {}
+
+      static SolverInfo
+      properties()
+      {
+        SolverInfo info;
+        info.name        = "block_pivoting";
+        info.label       = "block principal pivoting";
+        info.description = "block principal pivoting of Judice & Pires "
+                           "(Fernandes et al.), parameters p, tolerance";
+        info.subsection            = "Block pivoting";
+        info.default_iterations    = "10|S| + 100";
+        info.needs_definite_matrix = true;
+        return info;
+      }
 
       void
       solve(const Problem &problem,
@@ -40,8 +86,8 @@ namespace unilateral::lcp
       {
         const Index        n   = problem.size();
         const Index        n_c = problem.n_constrained();
-        const unsigned int p   = parameters.block_pivoting.p;
-        const double       eps = parameters.block_pivoting.tolerance;
+        const unsigned int p   = options.p;
+        const double       eps = options.tolerance;
 
         // at_bound[i]: i in S (the bound set). Step 1: R = Jf.
         std::vector<char> at_bound = problem.constrained_mask();
@@ -131,16 +177,11 @@ namespace unilateral::lcp
             ++nit;
           }
       }
+
+    private:
+      const Parameters options;
     };
   } // namespace
 
-  UNILATERAL_REGISTER_SOLVER(BlockPivoting,
-                             "block_pivoting",
-                             "block principal pivoting of Judice & Pires "
-                             "(Fernandes et al.), parameters p, tolerance",
-                             true,
-                             false,
-                             true,
-                             0,
-                             false)
+  UNILATERAL_REGISTER_SOLVER(BlockPivoting)
 } // namespace unilateral::lcp

@@ -43,7 +43,10 @@
  */
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/shifted_system.h>
+#include <unilateral/base/input_error.h>
 #include <unilateral/lcp/solver.h>
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
 #include <iomanip>
@@ -54,10 +57,319 @@ namespace unilateral::lcp
 {
   namespace
   {
-    class InteriorPoint : public Solver
+    /// Subsection "Solver/Interior point".
+    class InteriorPointParameters
+      : public MethodParametersBase<InteriorPointParameters>
     {
     public:
-      using Solver::Solver;
+      double centering                 = 0.1;     ///< delta in (42)
+      double step_factor               = 0.99995; ///< beta in (50)
+      double residual_tolerance        = 1e-10;   ///< epsilon_1 in (55)
+      double complementarity_tolerance = 1e-8;    ///< epsilon_2 in (56)
+      /// "basic" or "predictor-corrector".
+      std::string variant = "basic";
+      /// Gondzio's centrality correctors per predictor-corrector iteration.
+      unsigned int centrality_correctors = 2;
+
+      bool
+      predictor_corrector() const
+      {
+        return variant == "predictor-corrector";
+      }
+
+      void
+      add_parameters(dealii::ParameterHandler &prm) override
+      {
+        using namespace dealii::Patterns;
+        prm.add_parameter("Centering",
+                          centering,
+                          "delta in (0, 1) of mu_k = delta gap / |J1| (eq. "
+                          "42 of Fernandes et al., who do not state its "
+                          "value).",
+                          Double(0, 1));
+        prm.add_parameter("Step factor",
+                          step_factor,
+                          "beta of the step alpha = min(1, beta alpha_max) "
+                          "(eq. 50; the paper takes 0.99995).",
+                          Double(0, 1));
+        prm.add_parameter("Residual tolerance",
+                          residual_tolerance,
+                          "epsilon_1 on ||C z - F - w||_2 (eq. 55).",
+                          Double(0));
+        prm.add_parameter("Complementarity tolerance",
+                          complementarity_tolerance,
+                          "epsilon_2 on (z - psi)^T w (eq. 56).",
+                          Double(0));
+        prm.add_parameter(
+          "Variant",
+          variant,
+          "basic: the method of Fernandes et al. (one Newton step per "
+          "iteration, centring delta). predictor-corrector: Mehrotra's, which "
+          "starts from his heuristic point (one more factorisation), chooses "
+          "the centring from an affine step and corrects its second order "
+          "term: two solves with one factorisation per iteration, and far "
+          "fewer iterations where the solution is degenerate (running bond "
+          "walls, where the basic method converges only linearly). The "
+          "hand-over from cycling PDAS always uses predictor-corrector.",
+          Selection("basic|predictor-corrector"));
+        prm.add_parameter(
+          "Centrality correctors",
+          centrality_correctors,
+          "Gondzio's multiple centrality correctors per predictor-corrector "
+          "iteration (ignored by the basic variant): each is one more solve "
+          "with the iteration's factor that pulls the complementarity "
+          "products far from their mean back towards it, and is kept only if "
+          "it lengthens the step by 1 %. Where the affine step is short "
+          "(degenerate walls) they save factorisations: running bond m = "
+          "100, 22 -> 18 iterations. 0: Mehrotra's method alone.",
+          Integer(0, 10));
+      }
+
+      void
+      check(const std::string &section) const override
+      {
+        check_parameter(centering > 0 && centering < 1,
+                        section,
+                        "Centering",
+                        centering,
+                        "must be in (0, 1)");
+        check_parameter(step_factor > 0 && step_factor < 1,
+                        section,
+                        "Step factor",
+                        step_factor,
+                        "must be in (0, 1)");
+      }
+    };
+
+    /**
+     * The state of one interior-point solve: the iterate (z, its slack
+     * gap = z - psi on J1, and w), the Newton matrix of (47) and the
+     * direction. Each step of the method is one member function.
+     */
+    class InteriorPointIterate
+    {
+    public:
+      InteriorPointIterate(const Problem                 &problem,
+                           const InteriorPointParameters &options,
+                           Report                        &report)
+        : problem(problem)
+        , options(options)
+        , report(report)
+        , n_c(problem.n_constrained())
+        , z(Vector::Zero(problem.size()))
+        , gap(n_c)
+        , w(n_c)
+        , newton(problem.A, report.counters)
+        , shift(Vector::Zero(problem.size()))
+        , du(problem.size())
+        , dw(n_c)
+      {}
+
+      /**
+       * Starting point (66): z0 = 0, w0_i = max(10, -F_i); where psi_i >= 0
+       * z0 = 0 is not interior, z0_i = psi_i + max(1, |psi|_inf). With the
+       * predictor-corrector variant, Mehrotra's point instead.
+       */
+      void
+      start()
+      {
+        const Vector &psi = problem.lower_bound;
+        const double  psi_size =
+          n_c > 0 ? std::max(1.0, psi.lpNorm<Eigen::Infinity>()) : 1.0;
+        for (Index k = 0; k < n_c; ++k)
+          {
+            const Index i = problem.constrained[k];
+            if (!(psi[k] < 0))
+              z[i] = psi[k] + psi_size;
+            gap[k] = z[i] - psi[k];
+            w[k]   = std::max(10.0, -problem.b[i]);
+          }
+        if (options.predictor_corrector())
+          mehrotra_start(problem, newton, z, gap, w);
+      }
+
+      /// r = F - C z + w (minus the linear infeasibility (49)), its norm,
+      /// the complementarity (z - psi)^T w, and the infeasibility's
+      /// rounding floor.
+      void
+      residual()
+      {
+        const Vector Az = problem.A * z;
+        r               = problem.b - Az;
+        ++report.counters.matrix_vector_products;
+        for (Index j = 0; j < n_c; ++j)
+          r[problem.constrained[j]] += w[j];
+        complementarity = gap.dot(w);
+        infeasibility   = r.norm();
+        floor           = 100 * std::numeric_limits<double>::epsilon() *
+                (Az.norm() + problem.b.norm() + w.norm());
+      }
+
+      /**
+       * (55)-(56), accepting an infeasibility at its rounding floor. At
+       * that floor the infeasibility stops falling while the gap keeps
+       * shrinking tenfold per step, down to 1e-300 and NaN: three steps in
+       * a row that do not halve it, with the gap met, are that floor; the
+       * driver's relative KKT check then judges the iterate.
+       */
+      bool
+      converged()
+      {
+        const bool gap_met =
+          complementarity <= options.complementarity_tolerance;
+        if (gap_met && infeasibility > 0.5 * previous_infeasibility)
+          ++steps_at_floor;
+        else
+          steps_at_floor = 0;
+        previous_infeasibility = infeasibility;
+        return gap_met &&
+               (infeasibility <= std::max(options.residual_tolerance, floor) ||
+                steps_at_floor >= 3);
+      }
+
+      /// The matrix of (47), K = C + diag_J1(w / (z - psi)), factorised;
+      /// false if it is not positive definite.
+      bool
+      factorise_newton_matrix()
+      {
+        for (Index j = 0; j < n_c; ++j)
+          shift[problem.constrained[j]] = w[j] / gap[j];
+        return newton.factorise(shift);
+      }
+
+      /**
+       * (47): K du = r + E (c / (z - psi) - w),
+       *       dw = c / (z - psi) - w (1 + du_J1 / (z - psi)),
+       * for the centring term c of the complementarity rows
+       * (z - psi) w = c: mu_k in the paper's method.
+       */
+      void
+      direction(const Vector &centring)
+      {
+        Vector rhs = r;
+        for (Index j = 0; j < n_c; ++j)
+          rhs[problem.constrained[j]] += centring[j] / gap[j] - w[j];
+        newton.solve(rhs, du);
+        for (Index j = 0; j < n_c; ++j)
+          dw[j] = centring[j] / gap[j] -
+                  w[j] * (1 + du[problem.constrained[j]] / gap[j]);
+      }
+
+      /// (51): the largest step keeping z - psi >= 0 and w >= 0.
+      double
+      largest_step() const
+      {
+        double alpha_max = std::numeric_limits<double>::infinity();
+        for (Index j = 0; j < n_c; ++j)
+          {
+            const double dz = du[problem.constrained[j]];
+            if (dz < 0)
+              alpha_max = std::min(alpha_max, gap[j] / -dz);
+            if (dw[j] < 0)
+              alpha_max = std::min(alpha_max, w[j] / -dw[j]);
+          }
+        return alpha_max;
+      }
+
+      /// (42): mu_k = delta (z - psi)^T w / |J1| on every row.
+      Vector
+      fixed_centring() const
+      {
+        return Vector::Constant(
+          n_c, n_c > 0 ? options.centering * complementarity / n_c : 0.0);
+      }
+
+      /**
+       * Mehrotra: the affine step (c = 0) measures how far the gap can
+       * fall; the centring is sigma mu with sigma the cube of that
+       * fraction, and the corrector subtracts the second-order term ds dw
+       * the affine step ignores. Sets @p target to sigma mu.
+       */
+      Vector
+      mehrotra_centring(double &target)
+      {
+        Vector centring = Vector::Zero(n_c);
+        direction(centring);
+        const double alpha_affine           = std::min(1.0, largest_step());
+        double       affine_complementarity = 0;
+        for (Index j = 0; j < n_c; ++j)
+          affine_complementarity +=
+            (gap[j] + alpha_affine * du[problem.constrained[j]]) *
+            (w[j] + alpha_affine * dw[j]);
+        const double sigma = std::min(
+          1.0, std::pow(affine_complementarity / complementarity, 3));
+        target = sigma * complementarity / n_c;
+        for (Index j = 0; j < n_c; ++j)
+          centring[j] = target - du[problem.constrained[j]] * dw[j];
+        return centring;
+      }
+
+      /**
+       * Gondzio's correctors to the direction of @p centring, whose step is
+       * @p step: at the trial step min(1, 1.5 step) the products outside
+       * [0.1, 10] @p target are aimed back into that band by one more solve
+       * each; a corrector stays only if it lengthens the step by 1 %.
+       * Returns the step of the direction kept.
+       */
+      double
+      correct_centrality(Vector &centring, const double target, double step)
+      {
+        const double low = 0.1 * target, high = 10 * target;
+        for (unsigned int c = 0;
+             c < options.centrality_correctors && step < 1;
+             ++c)
+          {
+            const double trial = std::min(1.0, 1.5 * step);
+            for (Index j = 0; j < n_c; ++j)
+              {
+                const double product =
+                  (gap[j] + trial * du[problem.constrained[j]]) *
+                  (w[j] + trial * dw[j]);
+                // Raise small products to the band, lower large ones by at
+                // most its top.
+                if (product < low)
+                  centring[j] += low - product;
+                else if (product > high)
+                  centring[j] += std::max(high - product, -high);
+              }
+            Vector kept_du = du, kept_dw = dw;
+            direction(centring);
+            const double corrected = largest_step();
+            if (corrected < 1.01 * step)
+              {
+                du = std::move(kept_du);
+                dw = std::move(kept_dw);
+                break;
+              }
+            ++report.counters.centrality_correctors;
+            step = corrected;
+          }
+        return step;
+      }
+
+      /// (54): the step alpha along the direction.
+      void
+      take_step(const double alpha)
+      {
+        z += alpha * du;
+        for (Index j = 0; j < n_c; ++j)
+          {
+            gap[j] += alpha * du[problem.constrained[j]];
+            w[j] += alpha * dw[j];
+          }
+      }
+
+      /// The answer: z with its slack exactly psi + gap on J1, and the
+      /// ordering of the Newton matrix for the projection's systems (they
+      /// have A's pattern).
+      void
+      finish(Solution &solution) const
+      {
+        solution.u = z;
+        for (Index j = 0; j < n_c; ++j)
+          solution.u[problem.constrained[j]] = problem.lower_bound[j] + gap[j];
+        solution.factor = ActiveSetFactor::ordering_only(newton.ordering());
+      }
 
       /**
        * Mehrotra's starting point, for the LCP: z from the Newton matrix
@@ -113,53 +425,67 @@ namespace unilateral::lcp
           z[problem.constrained[k]] = psi[k] + gap[k];
       }
 
+
+      /// (z - psi)^T w and ||r||_2 of the last residual().
+      double complementarity = 0;
+      double infeasibility   = 0;
+
+    private:
+      const Problem                 &problem;
+      const InteriorPointParameters &options;
+      Report                        &report;
+      const Index                    n_c;
+      Vector                         z, gap, w;
+      ShiftedSystem                  newton;
+      Vector                         shift, r, du, dw;
+      /// The rounding floor of the infeasibility.
+      double floor = 0;
+      /// For the floor test of converged().
+      double       previous_infeasibility = std::numeric_limits<double>::infinity();
+      unsigned int steps_at_floor         = 0;
+    };
+
+    class InteriorPoint : public Solver
+    {
+    public:
+      using Parameters = InteriorPointParameters;
+
+      InteriorPoint(const SolverParameters &parameters,
+                    const Parameters       &options)
+        : Solver(parameters)
+        , options(options)
+      {}
+
+      static SolverInfo
+      properties()
+      {
+        SolverInfo info;
+        info.name        = "interior_point";
+        info.label       = "interior point";
+        info.description = "interior-point method of Fernandes, Figueiredo "
+                           "& Judice (eqs. 42-56, start 66)";
+        info.subsection         = "Interior point";
+        info.default_iterations = "500";
+        info.exact              = false;
+        info.variants = {{"predictor-corrector",
+                          {{"Interior point/Variant", "predictor-corrector"}}}};
+        return info;
+      }
+
       void
       solve(const Problem &problem,
             Solution      &solution,
             Report        &report,
             std::ostream  *progress) override
       {
-        const Index n   = problem.size();
-        const Index n_c = problem.n_constrained();
-        const auto &options = parameters.interior_point;
-        const Vector &psi   = problem.lower_bound;
-
-        // Starting point (66).
-        const double psi_size =
-          n_c > 0 ? std::max(1.0, psi.lpNorm<Eigen::Infinity>()) : 1.0;
-        Vector z = Vector::Zero(n);
-        Vector gap(n_c), w(n_c);
-        for (Index k = 0; k < n_c; ++k)
-          {
-            const Index i = problem.constrained[k];
-            if (!(psi[k] < 0))
-              z[i] = psi[k] + psi_size;
-            gap[k] = z[i] - psi[k];
-            w[k]   = std::max(10.0, -problem.b[i]);
-          }
-
-        ShiftedSystem newton(problem.A, report.counters);
-        Vector        shift = Vector::Zero(n), rhs(n), du(n), dw(n_c);
-        if (options.predictor_corrector)
-          mehrotra_start(problem, newton, z, gap, w);
+        InteriorPointIterate ip(problem, options, report);
+        ip.start();
         const unsigned int limit = iteration_limit(500);
-        double previous_infeasibility = std::numeric_limits<double>::infinity();
-        unsigned int steps_at_floor   = 0;
         for (unsigned int k = 0;; ++k)
           {
-            // r = F - C z + w: minus the linear infeasibility (49).
-            const Vector Az = problem.A * z;
-            Vector       r  = problem.b - Az;
-            ++report.counters.matrix_vector_products;
-            for (Index j = 0; j < n_c; ++j)
-              r[problem.constrained[j]] += w[j];
-            const double complementarity = gap.dot(w);
-            const double infeasibility   = r.norm();
-            // The rounding floor of the infeasibility (see above).
-            const double floor =
-              100 * std::numeric_limits<double>::epsilon() *
-              (Az.norm() + problem.b.norm() + w.norm());
-            if (!std::isfinite(infeasibility) || !std::isfinite(complementarity))
+            ip.residual();
+            if (!std::isfinite(ip.infeasibility) ||
+                !std::isfinite(ip.complementarity))
               {
                 report.status  = Status::singular;
                 report.message = "interior point broke down (non-finite "
@@ -170,23 +496,10 @@ namespace unilateral::lcp
             if (progress != nullptr && k > 0)
               *progress << "    interior point iteration " << k
                         << std::scientific << std::setprecision(2)
-                        << ": gap " << complementarity << ", infeasibility "
-                        << infeasibility << std::defaultfloat << std::endl;
-            // At its floor the infeasibility stops falling while the gap
-            // keeps shrinking tenfold per step, down to 1e-300 and NaN (90 x
-            // 90 plate: stuck at 1.1e-9 from iteration 20 on, broke down at
-            // 363). Three steps in a row that do not halve it, with the gap
-            // met, are that floor: stop, and let the driver's relative KKT
-            // check judge the iterate.
-            if (complementarity <= options.complementarity_tolerance &&
-                infeasibility > 0.5 * previous_infeasibility)
-              ++steps_at_floor;
-            else
-              steps_at_floor = 0;
-            previous_infeasibility = infeasibility;
-            if ((infeasibility <= std::max(options.residual_tolerance, floor) ||
-                 steps_at_floor >= 3) &&
-                complementarity <= options.complementarity_tolerance)
+                        << ": gap " << ip.complementarity
+                        << ", infeasibility " << ip.infeasibility
+                        << std::defaultfloat << std::endl;
+            if (ip.converged())
               {
                 report.status = Status::converged;
                 break;
@@ -196,21 +509,14 @@ namespace unilateral::lcp
                 report.status  = Status::iteration_limit;
                 report.message = "interior point reached " +
                                  std::to_string(limit) + " iterations (gap " +
-                                 std::to_string(complementarity) +
+                                 std::to_string(ip.complementarity) +
                                  ", infeasibility " +
-                                 std::to_string(infeasibility) + ")";
+                                 std::to_string(ip.infeasibility) + ")";
                 break;
               }
             report.iterations = k + 1;
 
-            // (47): K du = r + E (c / (z - psi) - w),
-            //       dw = c / (z - psi) - w (1 + du_J1 / (z - psi)),
-            // with K = C + diag_J1(w / (z - psi)), for the centring term c of
-            // the complementarity rows (z - psi) w = c: mu_k in the paper's
-            // method.
-            for (Index j = 0; j < n_c; ++j)
-              shift[problem.constrained[j]] = w[j] / gap[j];
-            if (!newton.factorise(shift))
+            if (!ip.factorise_newton_matrix())
               {
                 report.status  = Status::singular;
                 report.message = "interior point: the matrix of (47) is not "
@@ -219,126 +525,23 @@ namespace unilateral::lcp
                                  " (C_JfJf singular?)";
                 break;
               }
-            const auto direction = [&](const Vector &centring) {
-              rhs = r;
-              for (Index j = 0; j < n_c; ++j)
-                rhs[problem.constrained[j]] += centring[j] / gap[j] - w[j];
-              newton.solve(rhs, du);
-              for (Index j = 0; j < n_c; ++j)
-                dw[j] = centring[j] / gap[j] -
-                        w[j] * (1 + du[problem.constrained[j]] / gap[j]);
-            };
-            // (51): the largest step keeping z - psi >= 0 and w >= 0.
-            const auto largest_step = [&]() {
-              double alpha_max = std::numeric_limits<double>::infinity();
-              for (Index j = 0; j < n_c; ++j)
-                {
-                  const double dz = du[problem.constrained[j]];
-                  if (dz < 0)
-                    alpha_max = std::min(alpha_max, gap[j] / -dz);
-                  if (dw[j] < 0)
-                    alpha_max = std::min(alpha_max, w[j] / -dw[j]);
-                }
-              return alpha_max;
-            };
-            // Gondzio's correctors to the direction of @p centring, whose
-            // step is @p step; returns the step of the direction kept.
-            const auto correct_centrality = [&](Vector      &centring,
-                                                const double target,
-                                                double       step) {
-              // The band the products are aimed at.
-              const double low = 0.1 * target, high = 10 * target;
-              Vector       kept_du, kept_dw;
-              for (unsigned int c = 0;
-                   c < options.centrality_correctors && step < 1;
-                   ++c)
-                {
-                  const double trial = std::min(1.0, 1.5 * step);
-                  for (Index j = 0; j < n_c; ++j)
-                    {
-                      const double product =
-                        (gap[j] + trial * du[problem.constrained[j]]) *
-                        (w[j] + trial * dw[j]);
-                      // Raise small products to the band, lower large ones
-                      // by at most its top.
-                      if (product < low)
-                        centring[j] += low - product;
-                      else if (product > high)
-                        centring[j] += std::max(high - product, -high);
-                    }
-                  kept_du = du;
-                  kept_dw = dw;
-                  direction(centring);
-                  const double corrected = largest_step();
-                  if (corrected < 1.01 * step)
-                    {
-                      du = std::move(kept_du);
-                      dw = std::move(kept_dw);
-                      break;
-                    }
-                  ++report.counters.centrality_correctors;
-                  step = corrected;
-                }
-              return step;
-            };
-            Vector centring(n_c);
-            // sigma mu: the mean product the centring aims at.
-            double target = 0;
-            if (!options.predictor_corrector)
-              // (42): mu_k = delta (z - psi)^T w / |J1|.
-              centring.setConstant(
-                n_c > 0 ? options.centering * complementarity / n_c : 0.0);
-            else
-              {
-                // Mehrotra: the affine step (c = 0) measures how far the
-                // gap can fall; the centring is the cube of that fraction,
-                // and the corrector subtracts the second-order term ds dw
-                // the affine step ignores.
-                centring.setZero();
-                direction(centring);
-                const double alpha_affine = std::min(1.0, largest_step());
-                double       affine_complementarity = 0;
-                for (Index j = 0; j < n_c; ++j)
-                  affine_complementarity +=
-                    (gap[j] + alpha_affine * du[problem.constrained[j]]) *
-                    (w[j] + alpha_affine * dw[j]);
-                const double sigma = std::min(
-                  1.0, std::pow(affine_complementarity / complementarity, 3));
-                target = sigma * complementarity / n_c;
-                for (Index j = 0; j < n_c; ++j)
-                  centring[j] = target - du[problem.constrained[j]] * dw[j];
-              }
-            direction(centring);
-            double step = largest_step();
-            if (options.predictor_corrector)
-              step = correct_centrality(centring, target, step);
-            // (50).
-            const double alpha = std::min(1.0, options.step_factor * step);
-
-            // (54).
-            z += alpha * du;
-            for (Index j = 0; j < n_c; ++j)
-              {
-                gap[j] += alpha * du[problem.constrained[j]];
-                w[j] += alpha * dw[j];
-              }
+            double target   = 0; // sigma mu of the predictor-corrector
+            Vector centring = options.predictor_corrector() ?
+                                ip.mehrotra_centring(target) :
+                                ip.fixed_centring();
+            ip.direction(centring);
+            double step = ip.largest_step();
+            if (options.predictor_corrector())
+              step = ip.correct_centrality(centring, target, step);
+            ip.take_step(std::min(1.0, options.step_factor * step)); // (50)
           }
-        for (Index j = 0; j < n_c; ++j)
-          z[problem.constrained[j]] = psi[j] + gap[j];
-        solution.u = z;
-        // The projection's systems have A's pattern: order them as here.
-        solution.factor = ActiveSetFactor::ordering_only(newton.ordering());
+        ip.finish(solution);
       }
+
+    private:
+      const Parameters options;
     };
   } // namespace
 
-  UNILATERAL_REGISTER_SOLVER(InteriorPoint,
-                             "interior_point",
-                             "interior-point method of Fernandes, Figueiredo "
-                             "& Judice (eqs. 42-56, start 66)",
-                             false,
-                             false,
-                             false,
-                             0,
-                             false)
+  UNILATERAL_REGISTER_SOLVER(InteriorPoint)
 } // namespace unilateral::lcp

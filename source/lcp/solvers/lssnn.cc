@@ -34,7 +34,25 @@ namespace unilateral::lcp
     class Lssnn : public Solver
     {
     public:
-      using Solver::Solver;
+      using Parameters = NoParameters;
+
+      Lssnn(const SolverParameters &parameters, const Parameters &)
+        : Solver(parameters)
+      {}
+
+      static SolverInfo
+      properties()
+      {
+        SolverInfo info;
+        info.name        = "lssnn";
+        info.label       = "LSSNN";
+        info.description = "least squares with selected nonnegativity "
+                           "constraints (Lawson & Hanson; Ainsworth & Mihai)";
+        info.default_iterations    = "3|S| + 100";
+        info.needs_definite_matrix = true;
+        info.single_pivot          = true;
+        return info;
+      }
 
       void
       solve(const Problem &problem,
@@ -160,13 +178,5 @@ namespace unilateral::lcp
     };
   } // namespace
 
-  UNILATERAL_REGISTER_SOLVER(Lssnn,
-                             "lssnn",
-                             "least squares with selected nonnegativity "
-                             "constraints (Lawson & Hanson; Ainsworth & Mihai)",
-                             true,
-                             false,
-                             true,
-                             0,
-                             false)
+  UNILATERAL_REGISTER_SOLVER(Lssnn)
 } // namespace unilateral::lcp

@@ -9,7 +9,10 @@
  * Defaults omega = 2 / (1 + sin(pi / n)) and tol = n * machine epsilon.
  */
 #include <unilateral/lcp/active_set_system.h>
+#include <unilateral/base/input_error.h>
 #include <unilateral/lcp/solver.h>
+
+#include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
 #include <limits>
@@ -19,10 +22,71 @@ namespace unilateral::lcp
 {
   namespace
   {
+    /// Subsection "Solver/PSOR".
+    class PsorParameters : public MethodParametersBase<PsorParameters>
+    {
+    public:
+      /// omega; 0: 2 / (1 + sin(pi / n)).
+      double omega = 0;
+      /// tol; 0: n * machine epsilon.
+      double tolerance = 0;
+
+      void
+      add_parameters(dealii::ParameterHandler &prm) override
+      {
+        prm.add_parameter("Relaxation",
+                          omega,
+                          "omega in (0, 2); 0 takes 2 / (1 + sin(pi / n)) as "
+                          "Ainsworth & Mihai.",
+                          dealii::Patterns::Double(0, 2));
+        prm.add_parameter("Tolerance",
+                          tolerance,
+                          "Stop when ||u_old - u|| / ||u|| < tolerance; 0 "
+                          "takes n * machine epsilon as Ainsworth & Mihai.",
+                          dealii::Patterns::Double(0));
+      }
+
+      void
+      check(const std::string &section) const override
+      {
+        check_parameter(omega < 2,
+                        section,
+                        "Relaxation",
+                        omega,
+                        "must be in (0, 2) for convergence, or 0 for "
+                        "automatic");
+      }
+    };
+
     class Psor : public Solver
     {
     public:
-      using Solver::Solver;
+      using Parameters = PsorParameters;
+
+      Psor(const SolverParameters &parameters, const Parameters &options)
+        : Solver(parameters)
+        , options(options)
+      {}
+
+      static SolverInfo
+      properties()
+      {
+        SolverInfo info;
+        info.name        = "psor";
+        info.label       = "PSOR";
+        info.description = "projected successive over-relaxation (Ainsworth "
+                           "& Mihai), parameters omega, tol";
+        info.subsection  = "PSOR";
+        info.default_iterations    = "100000 sweeps";
+        info.needs_definite_matrix = true;
+        info.exact                 = false;
+        // Its rate of convergence is set by eps; the projection makes the
+        // answer exact anyway.
+        info.preferred_regularisation = 1e-2;
+        info.warm_start               = true;
+        info.stationary              = true;
+        return info;
+      }
 
       void
       solve(const Problem &problem,
@@ -32,12 +96,12 @@ namespace unilateral::lcp
       {
         const Index  n      = problem.size();
         const double pi     = std::acos(-1.0);
-        const double omega  = parameters.psor.omega > 0 ?
-                                parameters.psor.omega :
+        const double omega  = options.omega > 0 ?
+                                options.omega :
                                 (n > 1 ? 2.0 / (1.0 + std::sin(pi / n)) : 1.0);
         const double tolerance =
-          parameters.psor.tolerance > 0 ?
-            parameters.psor.tolerance :
+          options.tolerance > 0 ?
+            options.tolerance :
             n * std::numeric_limits<double>::epsilon();
 
         Vector &u = solution.u;
@@ -98,7 +162,10 @@ namespace unilateral::lcp
             if (progress != nullptr && (sweep & (sweep - 1)) == 0)
               *progress << "    psor sweep " << sweep << ": relative change "
                         << error << std::endl;
-            if (error < tolerance)
+            // A sweep that changed nothing is at its fixed point, which
+            // the relative test misses where u = 0 (an LCP without
+            // constraints: tolerance n * epsilon = 0).
+            if (error < tolerance || change == 0)
               {
                 report.status = Status::converged;
                 return;
@@ -119,16 +186,11 @@ namespace unilateral::lcp
               }
           }
       }
+
+    private:
+      const Parameters options;
     };
   } // namespace
 
-  UNILATERAL_REGISTER_SOLVER(Psor,
-                             "psor",
-                             "projected successive over-relaxation "
-                             "(Ainsworth & Mihai), parameters omega, tol",
-                             true,
-                             false,
-                             false,
-                             1e-2,
-                             true)
+  UNILATERAL_REGISTER_SOLVER(Psor)
 } // namespace unilateral::lcp

@@ -1,7 +1,8 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/scenes/masonry/assembly.h>
 #include <unilateral/scenes/masonry/mesh.h>
-#include <unilateral/scenes/masonry/scene_state.h>
+
+#include "scene_state.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -14,27 +15,6 @@
 
 namespace unilateral::masonry
 {
-  namespace
-  {
-    // A timer section only if the context has a timer (tests may not).
-    std::optional<dealii::TimerOutput::Scope>
-    section(const RunContext &context, const std::string &name)
-    {
-      if (context.timer == nullptr)
-        return std::nullopt;
-      return std::optional<dealii::TimerOutput::Scope>(std::in_place,
-                                                       *context.timer,
-                                                       name);
-    }
-
-    void
-    stage(const RunContext &context, const std::string &text)
-    {
-      if (context.progress != nullptr)
-        *context.progress << "  masonry: " << text << std::endl;
-    }
-  } // namespace
-
   void
   MasonryScene::declare_parameters(dealii::ParameterHandler &prm)
   {
@@ -42,20 +22,21 @@ namespace unilateral::masonry
   }
 
   MasonryScene::MasonryScene(dealii::ParameterHandler &prm)
+    : Scene(registered_name)
   {
     parameters.parse_parameters(prm);
   }
 
   MasonryScene::MasonryScene(const Parameters &parameters)
-      : parameters(parameters)
-  {
-  }
+    : Scene(registered_name)
+    , parameters(parameters)
+  {}
 
   MasonryScene::MasonryScene(const Parameters &parameters, const Layout &layout)
-      : parameters(parameters)
-      , custom_layout(std::make_unique<Layout>(layout))
-  {
-  }
+    : Scene(registered_name)
+    , parameters(parameters)
+    , custom_layout(std::make_unique<Layout>(layout))
+  {}
 
   MasonryScene::~MasonryScene() = default;
 
@@ -71,28 +52,14 @@ namespace unilateral::masonry
     return *state->change;
   }
 
-  const lcp::Problem &
-  MasonryScene::problem() const
-  {
-    return state->problem;
-  }
-
-  const lcp::Solution &
-  MasonryScene::solution() const
-  {
-    return state->solution;
-  }
-
   double
   MasonryScene::force_unit() const
   {
     return unit;
   }
 
-  // The layout of the chosen bond and its mesh: every block meshed on its
-  // own with cells of size h = H / 2^r, material_id = block index.
   void
-  MasonryScene::make_grid()
+  MasonryScene::make_grid(RunContext &context)
   {
     state         = std::make_unique<State>(parameters.geometry.element);
     state->layout = custom_layout ? *custom_layout :
@@ -117,6 +84,9 @@ namespace unilateral::masonry
     problem_sizes.block_height = H;
     problem_sizes.cell_size    = h;
     problem_sizes.gap          = parameters.boundary.relative_gap * H;
+    context.stage(registered_name,
+                  std::to_string(problem_sizes.n_blocks) + " blocks, " +
+                    std::to_string(problem_sizes.n_cells) + " cells");
   }
 
   // Points closer than this are the same point: far above the round-off
@@ -127,29 +97,25 @@ namespace unilateral::masonry
     return 1e-8 * problem_sizes.cell_size;
   }
 
-  // DOFs, then the supports and joints found on the mesh, then the change of
-  // variables to normal gaps.
   void
-  MasonryScene::setup_system(const RunContext &context)
+  MasonryScene::setup_system(RunContext &context)
   {
     {
-      const auto      timer          = section(context, "distribute DOFs");
       Discretisation &discretisation = state->discretisation;
       discretisation.dof_handler.reinit(discretisation.triangulation);
       discretisation.dof_handler.distribute_dofs(*discretisation.fe);
       problem_sizes.n_dofs = discretisation.dof_handler.n_dofs();
     }
-    stage(context,
-          std::to_string(problem_sizes.n_dofs) + " DOFs; detecting contacts");
+    context.stage(registered_name,
+                  std::to_string(problem_sizes.n_dofs) +
+                    " DOFs; detecting contacts");
     {
-      const auto timer = section(context, "contact detection");
       state->contacts  = detect_contacts(state->discretisation.dof_handler,
                                         parameters.boundary.signorini_fraction,
                                         problem_sizes.gap,
                                         coincidence_tolerance());
     }
     {
-      const auto        timer    = section(context, "change of variables");
       const ContactSet &contacts = state->contacts;
       // Only cycles among constrained DOFs can fail, so the constraint list
       // names every DOF an error message needs.
@@ -179,29 +145,17 @@ namespace unilateral::masonry
     problem_sizes.n_horizontal_joint   = contacts.n_horizontal_joint;
     problem_sizes.n_vertical_joint     = contacts.n_vertical_joint;
     problem_sizes.max_expansion_length = state->change->max_expansion_length();
-    stage(context,
-          "n = " + std::to_string(problem_sizes.n_unknowns) +
-            " unknowns, n_c = " + std::to_string(problem_sizes.n_constraints) +
-            " constraints");
-  }
-
-  const Sizes &
-  MasonryScene::set_up(RunContext &context)
-  {
-    {
-      const auto timer = section(context, "make grid");
-      make_grid();
-    }
-    stage(context,
-          std::to_string(problem_sizes.n_blocks) + " blocks, " +
-            std::to_string(problem_sizes.n_cells) + " cells");
-    setup_system(context);
-    return problem_sizes;
+    context.stage(registered_name,
+                  "n = " + std::to_string(problem_sizes.n_unknowns) +
+                    " unknowns, n_c = " +
+                    std::to_string(problem_sizes.n_constraints) +
+                    " constraints");
   }
 
   void
-  MasonryScene::assemble_system()
+  MasonryScene::assemble_system(RunContext &context)
   {
+    context.stage(registered_name, "assembling A~ and b~ in the gap variables");
     LoadData loads;
     loads.classes        = parameters.materials.classes;
     loads.class_of_block = state->class_of_block;
@@ -209,27 +163,44 @@ namespace unilateral::masonry
     loads.top_traction   = parameters.boundary.top_traction;
     loads.y_top          = state->layout.bounding_box().y1;
     loads.tolerance      = coincidence_tolerance();
-    state->problem       = assemble_lcp(state->discretisation,
-                                  *state->change,
-                                  state->contacts,
-                                  loads);
-  }
+    lcp_problem          = assemble_lcp(state->discretisation,
+                               *state->change,
+                               state->contacts,
+                               loads);
+    // Blocks are free to move unless contacts hold them, and a wall is in
+    // contact almost everywhere: the solvers' automatic settings for both.
+    lcp_problem.floating_bodies = true;
+    lcp_problem.mostly_active   = true;
 
-  lcp::Report
-  MasonryScene::solve(RunContext &context)
-  {
-    return unilateral::solve(context, *this, state->problem, state->solution);
+    // The solvers' force unit (see force_unit()): their tolerances and
+    // parameters (PDAS's tau weighs a displacement against a force, the
+    // interior-point methods' tolerances and starting points are absolute)
+    // then see the same numbers whatever unit the parameter file uses. A
+    // change of units must not change the answer.
+    double largest_modulus = 0;
+    for (const MaterialClass &material : parameters.materials.classes)
+      largest_modulus = std::max(largest_modulus, material.youngs_modulus);
+    unit = largest_modulus / 4e3;
+    if (unit != 1 && unit > 0)
+      {
+        lcp_problem.A /= unit;
+        lcp_problem.b /= unit;
+      }
+    else
+      unit = 1;
   }
 
   // u = C~^-1 u~, and for every constraint its normal gap (the gap variable,
   // or u_y + g on Gamma_S), its force lambda and whether it is active.
   void
-  MasonryScene::recover_physical_solution()
+  MasonryScene::postprocess(const RunContext &, lcp::Report &report)
   {
-    const lcp::Solution &solution = state->solution;
+    report.energy *= unit;
+    report.regularisation *= unit;
+    const lcp::Solution &solution = lcp_solution;
     state->displacement = state->change->to_physical(solution.u.data());
 
-    std::vector<char> active(state->problem.size(), 0);
+    std::vector<char> active(lcp_problem.size(), 0);
     for (const lcp::Index i : solution.active_set)
       active[i] = 1;
     const ContactSet &contacts = state->contacts;
@@ -332,7 +303,7 @@ namespace unilateral::masonry
         << s.n_signorini << " Signorini nodes with gap g = " << s.gap
         << "; joints: " << s.n_horizontal_joint << " horizontal + "
         << s.n_vertical_joint << " vertical node pairs\n";
-    print_solver_summary(out, state->problem, report);
+    print_solver_summary(out, lcp_problem, report);
     out << std::scientific << std::setprecision(6) << "  max displacement "
         << max_displacement << ", " << n_closed_contacts << " of "
         << s.n_constraints << " contacts closed\n";
@@ -346,11 +317,8 @@ namespace unilateral::masonry
   }
 
   void
-  MasonryScene::write_summary_file(const RunContext  &context,
-                                   const lcp::Report &report) const
+  MasonryScene::add_summary(JsonObject &summary) const
   {
-    JsonObject summary =
-      summary_base(context, "masonry", state->problem, report);
     const Sizes &s = problem_sizes;
     summary.set("geometry", state->layout.name)
       .set("m", parameters.geometry.m)
@@ -370,7 +338,6 @@ namespace unilateral::masonry
       .set("max_displacement", max_displacement)
       .set("n_closed_contacts", n_closed_contacts)
       .set("n_degenerate_contacts", n_degenerate_contacts);
-    unilateral::write_summary(context, summary);
   }
 
   std::string
@@ -382,62 +349,8 @@ namespace unilateral::masonry
            std::to_string(parameters.geometry.refinement);
   }
 
-  lcp::Report
-  MasonryScene::run(RunContext &context)
-  {
-    set_up(context);
-
-    stage(context, "assembling A~ and b~ in the gap variables");
-    {
-      const auto timer = section(context, "assembly");
-      assemble_system();
-    }
-    {
-      const auto timer = section(context, "check LCP");
-      lcp::check_and_normalise(state->problem);
-      // The solvers' force unit (see force_unit()): their tolerances and
-      // parameters (PDAS's tau weighs a displacement against a force, the
-      // interior-point methods' tolerances and starting points are absolute)
-      // then see the same numbers whatever unit the parameter file uses. A
-      // change of units must not change the answer.
-      double largest_modulus = 0;
-      for (const MaterialClass &material : parameters.materials.classes)
-        largest_modulus = std::max(largest_modulus, material.youngs_modulus);
-      unit = largest_modulus / 4e3;
-      if (unit != 1 && unit > 0)
-        {
-          state->problem.A /= unit;
-          state->problem.b /= unit;
-        }
-      else
-        unit = 1;
-    }
-    export_lcp_if_requested(context, state->problem);
-
-    lcp::Report report = solve(context);
-    write_solution_if_requested(context, state->solution);
-    report.energy *= unit;
-    report.regularisation *= unit;
-    {
-      const auto timer = section(context, "recover solution");
-      recover_physical_solution();
-    }
-    if (context.write_vtu)
-      {
-        stage(context, "writing VTU/PVD");
-        const auto timer = section(context, "output");
-        output_results(context);
-      }
-
-    if (context.out != nullptr)
-      print_summary(*context.out, report);
-    write_summary_file(context, report);
-    return report;
-  }
-
   UNILATERAL_REGISTER_SCENE(
     MasonryScene,
-    "masonry",
     "a wall of elastic blocks in frictionless contact (Ainsworth & Mihai "
     "2006): stack bond, running bond or laminae")
 } // namespace unilateral::masonry

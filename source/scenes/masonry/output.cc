@@ -1,5 +1,6 @@
 #include <unilateral/base/input_error.h>
-#include <unilateral/scenes/masonry/scene_state.h>
+
+#include "scene_state.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/lac/vector.h>
@@ -114,6 +115,7 @@ namespace unilateral::masonry
   void
   MasonryScene::output_results(const RunContext &context) const
   {
+    context.stage(registered_name, "writing VTU/PVD");
     const Discretisation &discretisation = state->discretisation;
     const ContactSet     &contacts       = state->contacts;
     const auto            n_dofs         = discretisation.dof_handler.n_dofs();

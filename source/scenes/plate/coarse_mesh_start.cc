@@ -7,7 +7,7 @@
  * x 90 on psi3: 6 iterations instead of 37), and the rest of the work is
  * done on meshes a quarter, a sixteenth... the size.
  */
-#include <unilateral/lcp/solver.h>
+#include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/scenes/plate/plate_scene.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -41,18 +41,15 @@ namespace unilateral::plate
     coarse_geometry.n_x             = (parameters.geometry.n_x + 1) / 2;
     coarse_geometry.n_y             = (parameters.geometry.n_y + 1) / 2;
     PlateScene coarse(coarse_parameters);
-    coarse.make_grid();
-    coarse.setup_system();
-    coarse.assemble_system();
+    RunContext quiet; // the coarse levels' stages are this run's "solve"
+    coarse.set_up(quiet);
+    coarse.assemble(quiet);
     if (coarse.uses_coarse_mesh_start(context))
-      coarse.solution = coarse.coarse_mesh_start(context);
+      coarse.lcp_solution = coarse.coarse_mesh_start(context);
 
-    const lcp::Report report =
-      lcp::solve_lcp(coarse.problem,
-                     solver_parameters(context, coarse),
-                     coarse.solution,
-                     nullptr,
-                     coarse.auto_regularisation());
+    const lcp::Report report = lcp::solve_lcp(coarse.lcp_problem,
+                                              context.solver,
+                                              coarse.lcp_solution);
     coarse_levels = coarse.coarse_levels;
     coarse_levels.insert(coarse_levels.begin(),
                          {coarse_geometry.n_x,
@@ -77,7 +74,7 @@ namespace unilateral::plate
     // The field of this (coarse) mesh, cell by cell.
     dealii::Vector<double> coarse_values(dof_handler.n_dofs());
     for (lcp::Index k = 0; k < free_dofs.size(); ++k)
-      coarse_values[free_dofs.dof[k]] = solution.u[k];
+      coarse_values[free_dofs.dof[k]] = lcp_solution.u[k];
     const Geometry &geometry = parameters.geometry;
     const double    h_x      = geometry.length_x / geometry.n_x;
     const double    h_y      = geometry.length_y / geometry.n_y;
@@ -144,7 +141,7 @@ namespace unilateral::plate
     // coarse contact set itself (psi3 f1: 6 instead of 7 iterations, 319
     // instead of 664 changes after the first). Those nodes start on psi.
     double largest_deflection = 0;
-    for (const lcp::Index i : fine.problem.constrained)
+    for (const lcp::Index i : fine.lcp_problem.constrained)
       largest_deflection = std::max(largest_deflection, std::abs(u[i]));
     const double h = std::max(fine.parameters.geometry.length_x /
                                 fine.parameters.geometry.n_x,
@@ -155,13 +152,13 @@ namespace unilateral::plate
     const double contact_band = 2.4 * h * h * largest_deflection;
     lcp::Solution start;
     start.u = u;
-    for (lcp::Index k = 0; k < fine.problem.n_constrained(); ++k)
+    for (lcp::Index k = 0; k < fine.lcp_problem.n_constrained(); ++k)
       {
-        const lcp::Index i = fine.problem.constrained[k];
-        if (u[i] - fine.problem.lower_bound[k] <= contact_band)
+        const lcp::Index i = fine.lcp_problem.constrained[k];
+        if (u[i] - fine.lcp_problem.lower_bound[k] <= contact_band)
           {
             start.active_set.push_back(i);
-            start.u[i] = fine.problem.lower_bound[k];
+            start.u[i] = fine.lcp_problem.lower_bound[k];
           }
       }
     return start;

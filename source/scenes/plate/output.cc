@@ -179,13 +179,13 @@ namespace unilateral::plate
     std::vector<double> force_at_vertex(triangulation.n_vertices(), 0.0);
     std::vector<char>   contact_at_vertex(triangulation.n_vertices(), 0);
     {
-      std::vector<char> active(problem.size(), 0);
-      for (const lcp::Index i : solution.active_set)
+      std::vector<char> active(lcp_problem.size(), 0);
+      for (const lcp::Index i : lcp_solution.active_set)
         active[i] = 1;
       for (std::size_t k = 0; k < bound_vertex.size(); ++k)
         {
-          const lcp::Index i = problem.constrained[k];
-          force_at_vertex[bound_vertex[k]]   = solution.lambda[i];
+          const lcp::Index i = lcp_problem.constrained[k];
+          force_at_vertex[bound_vertex[k]]   = lcp_solution.lambda[i];
           contact_at_vertex[bound_vertex[k]] = active[i];
         }
     }

@@ -40,7 +40,8 @@ namespace unilateral::plate
   {}
 
   PlateScene::PlateScene(const Parameters &parameters)
-    : parameters(parameters)
+    : Scene(registered_name)
+    , parameters(parameters)
     , fe(dealii::FE_Q<2>(1), fe::BognerFoxSchmit::dofs_per_vertex)
   {
     rigidity = flexural_rigidity(parameters.material.youngs_modulus,
@@ -54,9 +55,8 @@ namespace unilateral::plate
     force = parse_function("Plate/Load/Force", parameters.load.expression, "");
   }
 
-  // The plate [0, L1] x [0, L2] as n1 x n2 equal rectangles.
   void
-  PlateScene::make_grid()
+  PlateScene::make_grid(RunContext &)
   {
     const Geometry &geometry = parameters.geometry;
     dealii::GridGenerator::subdivided_hyper_rectangle(
@@ -66,12 +66,8 @@ namespace unilateral::plate
       dealii::Point<2>(geometry.length_x, geometry.length_y));
   }
 
-  /**
-   * Number the DOFs, eliminate the clamped ones and find J1, the w DOFs of
-   * the interior nodes, with the obstacle's value at each of them.
-   */
   void
-  PlateScene::setup_system()
+  PlateScene::setup_system(RunContext &)
   {
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
@@ -106,16 +102,16 @@ namespace unilateral::plate
       }
     std::sort(interior_nodes.begin(), interior_nodes.end());
 
-    problem.constrained.clear();
+    lcp_problem.constrained.clear();
     bound_vertex.clear();
     if (obstacle == nullptr)
       {
-        problem.lower_bound.resize(0);
+        lcp_problem.lower_bound.resize(0);
         return;
       }
     const std::vector<dealii::Point<2>> &vertices =
       triangulation.get_vertices();
-    problem.lower_bound.resize(interior_nodes.size());
+    lcp_problem.lower_bound.resize(interior_nodes.size());
     for (const auto &[free, vertex] : interior_nodes)
       {
         const double psi = obstacle->value(vertices[vertex]);
@@ -130,15 +126,15 @@ namespace unilateral::plate
                     << "); give an obstacle that is finite at every node";
             throw InputError(message.str());
           }
-        problem.lower_bound[problem.constrained.size()] = psi;
-        problem.constrained.push_back(free);
+        lcp_problem.lower_bound[lcp_problem.constrained.size()] = psi;
+        lcp_problem.constrained.push_back(free);
         bound_vertex.push_back(vertex);
       }
   }
 
-  // A = C_JJ and b = F_J; the clamped DOFs are zero, so F needs no lifting.
+  // The clamped DOFs are zero, so F needs no lifting.
   void
-  PlateScene::assemble_system()
+  PlateScene::assemble_system(RunContext &)
   {
     assemble_plate_system(dof_handler,
                           free_dofs,
@@ -148,34 +144,28 @@ namespace unilateral::plate
                           *force,
                           "parameter 'Plate/Load/Force' = " +
                             parameters.load.name,
-                          problem.A,
-                          problem.b);
-    lcp::check_and_normalise(problem);
+                          lcp_problem.A,
+                          lcp_problem.b);
   }
 
-  lcp::Report
-  PlateScene::solve(RunContext &context)
+  void
+  PlateScene::initial_solution(RunContext &context)
   {
     if (uses_coarse_mesh_start(context))
-      {
-        dealii::TimerOutput::Scope scope(*context.timer, "coarse-mesh start");
-        solution = coarse_mesh_start(context);
-      }
-    return unilateral::solve(context, *this, problem, solution);
+      lcp_solution = coarse_mesh_start(context);
   }
 
-  // The full DOF vector, cn, the smallest nodal deflection, and w at the
-  // centre of the plate (evaluated on the cell that contains it).
+  // w at the centre is evaluated on the cell that contains it.
   void
-  PlateScene::compute_results(const lcp::Report &report)
+  PlateScene::postprocess(const RunContext &, lcp::Report &report)
   {
     dof_values.reinit(dof_handler.n_dofs());
     for (lcp::Index k = 0; k < free_dofs.size(); ++k)
-      dof_values[free_dofs.dof[k]] = solution.u[k];
+      dof_values[free_dofs.dof[k]] = lcp_solution.u[k];
 
     plate_results.n_elements = triangulation.n_active_cells();
-    plate_results.n_free     = static_cast<unsigned int>(problem.size());
-    plate_results.n_bounds   = static_cast<unsigned int>(problem.n_constrained());
+    plate_results.n_free     = static_cast<unsigned int>(lcp_problem.size());
+    plate_results.n_bounds   = static_cast<unsigned int>(lcp_problem.n_constrained());
     plate_results.n_contact  = report.n_active;
     plate_results.rigidity   = rigidity;
 
@@ -226,7 +216,7 @@ namespace unilateral::plate
         << parameters.load.name << "\n"
         << "  |J| = " << plate_results.n_free << " free DOFs, |J1| = "
         << plate_results.n_bounds << " bounded nodes\n";
-    print_solver_summary(out, problem, report);
+    print_solver_summary(out, lcp_problem, report);
     if (!coarse_levels.empty())
       {
         out << "  started from the solution on";
@@ -250,10 +240,8 @@ namespace unilateral::plate
   }
 
   void
-  PlateScene::write_summary(const RunContext  &context,
-                            const lcp::Report &report) const
+  PlateScene::add_summary(JsonObject &summary) const
   {
-    JsonObject summary = summary_base(context, "plate", problem, report);
     summary.set("n_elements", plate_results.n_elements)
       .set("n_free", plate_results.n_free)
       .set("n_bounds", plate_results.n_bounds)
@@ -284,42 +272,10 @@ namespace unilateral::plate
         .set("iterations", level.iterations)
         .set("status", lcp::to_string(level.status));
     summary.set("coarse_mesh_start", levels);
-    unilateral::write_summary(context, summary);
-  }
-
-  lcp::Report
-  PlateScene::run(RunContext &context)
-  {
-    {
-      dealii::TimerOutput::Scope scope(*context.timer, "make grid");
-      make_grid();
-    }
-    {
-      dealii::TimerOutput::Scope scope(*context.timer, "setup system");
-      setup_system();
-    }
-    {
-      dealii::TimerOutput::Scope scope(*context.timer, "assemble system");
-      assemble_system();
-    }
-    export_lcp_if_requested(context, problem);
-
-    const lcp::Report report = solve(context);
-    write_solution_if_requested(context, solution);
-    compute_results(report);
-    if (context.write_vtu)
-      {
-        dealii::TimerOutput::Scope scope(*context.timer, "output results");
-        output_results(context);
-      }
-    print_summary(*context.out, report);
-    write_summary(context, report);
-    return report;
   }
 
   UNILATERAL_REGISTER_SCENE(
     PlateScene,
-    "plate",
     "a clamped Kirchhoff plate on an obstacle, Bogner-Fox-Schmit elements "
     "(Fernandes, Figueiredo & Judice 2002)")
 } // namespace unilateral::plate

@@ -58,13 +58,15 @@ namespace unilateral::masonry
    * change of variables to normal gaps (Section 3), and the LCP goes to the
    * shared solver layer.
    *
-   * Life cycle as in the deal.II tutorials: make_grid, setup_system (DOFs,
-   * contact detection, change of variables), assemble_system, solve,
-   * output_results, run.
+   * The stages of Scene::run(), as in the deal.II tutorials: make_grid,
+   * setup_system (DOFs, contact detection, change of variables),
+   * assemble_system, postprocess, output_results.
    */
   class MasonryScene : public Scene
   {
   public:
+    static constexpr const char *registered_name = "masonry";
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
@@ -81,35 +83,10 @@ namespace unilateral::masonry
 
     ~MasonryScene() override;
 
-    lcp::Report
-    run(RunContext &context) override;
-
-    /// A is singular (the blocks are free to move): regularise with 1e-9.
-    double
-    auto_regularisation() const override
-    {
-      return 1e-9;
-    }
-
-    /// A wall is in contact almost everywhere: PDAS starts with every
-    /// constraint active (at m = 225 stack bond: 7 iterations instead of 11).
-    bool
-    auto_pdas_start_all_active() const override
-    {
-      return true;
-    }
-
     std::string
     size_parameters() const override;
 
-    /**
-     * make_grid and setup_system only: n and n_c without assembling or
-     * solving (for the Table 2 counts). Timer sections go to
-     * @p context.timer if it is set.
-     */
-    const Sizes &
-    set_up(RunContext &context);
-
+    /// After set_up(): n and n_c (the Table 2 counts) and the other sizes.
     const Sizes &
     sizes() const
     {
@@ -135,53 +112,49 @@ namespace unilateral::masonry
     std::vector<NodalDisplacement>
     nodal_displacements() const;
 
-    /// After run(): the LCP that was solved, in the solver's force unit:
-    /// A and b are the assembled ones divided by force_unit().
-    const lcp::Problem &
-    problem() const;
-
-    /// After run(): the LCP solution (new variables, multipliers; the
-    /// multipliers in the solver's force unit, like problem()).
-    const lcp::Solution &
-    solution() const;
-
-    /// The force unit of the LCP handed to the solvers: the largest Young's
-    /// modulus divided by 4e3 (the paper's E). A change of the force unit
-    /// (every E, density, gravity and traction times k) then hands the
-    /// solvers the same numbers, so it cannot change their answer; with the
-    /// paper's E it is 1 and nothing is scaled. Energies and forces are
-    /// reported in the units of the parameter file.
+    /// The force unit of the LCP handed to the solvers (problem() and
+    /// solution() are in it): the largest Young's modulus divided by 4e3
+    /// (the paper's E). A change of the force unit (every E, density,
+    /// gravity and traction times k) then hands the solvers the same
+    /// numbers, so it cannot change their answer; with the paper's E it is
+    /// 1 and nothing is scaled. Energies and forces are reported in the
+    /// units of the parameter file.
     double
     force_unit() const;
 
+  protected:
+    /// The layout of the chosen bond and its mesh: every block meshed on its
+    /// own with cells of size h = H / 2^r, material_id = block index.
+    void
+    make_grid(RunContext &context) override;
+
+    /// DOFs, then the supports and joints found on the mesh, then the
+    /// change of variables to normal gaps.
+    void
+    setup_system(RunContext &context) override;
+
+    /// A~ and b~ in the gap variables, in the solvers' force unit.
+    void
+    assemble_system(RunContext &context) override;
+
+    /// u = C~^-1 u~, each constraint's gap, force and state, the energy in
+    /// the parameter file's units.
+    void
+    postprocess(const RunContext &context, lcp::Report &report) override;
+
+    /// In output.cc.
+    void
+    output_results(const RunContext &context) const override;
+
+    void
+    print_summary(std::ostream &out, const lcp::Report &report) const override;
+
+    void
+    add_summary(JsonObject &summary) const override;
+
   private:
-    void
-    make_grid();
-
-    void
-    setup_system(const RunContext &context);
-
     double
     coincidence_tolerance() const;
-
-    void
-    assemble_system();
-
-    lcp::Report
-    solve(RunContext &context);
-
-    void
-    recover_physical_solution();
-
-    void
-    output_results(const RunContext &context) const;
-
-    void
-    print_summary(std::ostream &out, const lcp::Report &report) const;
-
-    void
-    write_summary_file(const RunContext  &context,
-                       const lcp::Report &report) const;
 
     Parameters parameters;
     /// Set if the scene was given its own layout.
@@ -196,7 +169,7 @@ namespace unilateral::masonry
     double                        max_displacement  = 0;
     double                        unit              = 1;
     unsigned int                  n_closed_contacts = 0;
-    /// Closed without force (see recover_physical_solution).
+    /// Closed without force (see postprocess).
     unsigned int                  n_degenerate_contacts = 0;
   };
 } // namespace unilateral::masonry

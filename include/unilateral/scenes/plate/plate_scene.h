@@ -52,21 +52,14 @@ namespace unilateral::plate
   class PlateScene : public Scene
   {
   public:
+    static constexpr const char *registered_name = "plate";
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     explicit PlateScene(dealii::ParameterHandler &prm);
 
     explicit PlateScene(const Parameters &parameters);
-
-    lcp::Report
-    run(RunContext &context) override;
-
-    double
-    auto_regularisation() const override
-    {
-      return 0;
-    }
 
     std::string
     size_parameters() const override
@@ -123,19 +116,40 @@ namespace unilateral::plate
       return dof_handler;
     }
 
+  protected:
+    /// The plate [0, L1] x [0, L2] as n1 x n2 equal rectangles.
+    void
+    make_grid(RunContext &context) override;
+
+    /// Number the DOFs, eliminate the clamped ones and find J1, the w DOFs
+    /// of the interior nodes, with the obstacle's value at each of them.
+    void
+    setup_system(RunContext &context) override;
+
+    /// A = C_JJ and b = F_J.
+    void
+    assemble_system(RunContext &context) override;
+
+    /// The coarse-mesh start, where it applies.
+    void
+    initial_solution(RunContext &context) override;
+
+    /// The full DOF vector, cn, the smallest nodal deflection, and w at the
+    /// centre of the plate.
+    void
+    postprocess(const RunContext &context, lcp::Report &report) override;
+
+    /// In output.cc: the VTU/PVD files.
+    void
+    output_results(const RunContext &context) const override;
+
+    void
+    print_summary(std::ostream &out, const lcp::Report &report) const override;
+
+    void
+    add_summary(JsonObject &summary) const override;
+
   private:
-    void
-    make_grid();
-
-    void
-    setup_system();
-
-    void
-    assemble_system();
-
-    lcp::Report
-    solve(RunContext &context);
-
     /// In coarse_mesh_start.cc: whether this run starts from a coarser mesh.
     bool
     uses_coarse_mesh_start(const RunContext &context) const;
@@ -151,19 +165,6 @@ namespace unilateral::plate
     lcp::Solution
     interpolate_to(const PlateScene &fine) const;
 
-    void
-    compute_results(const lcp::Report &report);
-
-    /// In output.cc: the VTU/PVD files.
-    void
-    output_results(const RunContext &context) const;
-
-    void
-    print_summary(std::ostream &out, const lcp::Report &report) const;
-
-    void
-    write_summary(const RunContext &context, const lcp::Report &report) const;
-
     Parameters                                   parameters;
     double                                       rigidity;
     std::unique_ptr<dealii::Function<2, double>> obstacle; ///< null: none
@@ -176,9 +177,6 @@ namespace unilateral::plate
     FreeDofs free_dofs;
     /// Per index in J1 (in S order): the vertex index of the node.
     std::vector<unsigned int> bound_vertex;
-
-    lcp::Problem  problem;
-    lcp::Solution solution;
 
     dealii::Vector<double>   dof_values;
     Results                  plate_results;

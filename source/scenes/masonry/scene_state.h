@@ -1,7 +1,5 @@
 #pragma once
 
-#include <unilateral/lcp/problem.h>
-#include <unilateral/lcp/report.h>
 #include <unilateral/scenes/masonry/change_of_variables.h>
 #include <unilateral/scenes/masonry/contact_detection.h>
 #include <unilateral/scenes/masonry/discretisation.h>
@@ -13,8 +11,8 @@
 
 namespace unilateral::masonry
 {
-  /// The heavy part of MasonryScene (deal.II objects, the LCP), shared by the
-  /// scene's translation units only.
+  /// The heavy part of MasonryScene (its deal.II objects), shared by the
+  /// scene's translation units only: a private header, beside them.
   struct MasonryScene::State
   {
     explicit State(const ElementType element)
@@ -27,8 +25,6 @@ namespace unilateral::masonry
     Discretisation                     discretisation;
     ContactSet                         contacts;
     std::unique_ptr<ChangeOfVariables> change;
-    lcp::Problem                       problem;
-    lcp::Solution                      solution;
     /// u = C~^-1 u~: the physical displacement, one entry per DOF.
     std::vector<double> displacement;
   };

@@ -1,0 +1,294 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/lcp/solver.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace unilateral
+{
+  template class Registry<lcp::SolverInfo>;
+} // namespace unilateral
+
+namespace unilateral::lcp
+{
+  namespace
+  {
+    // The one registered method with @p property, or an error naming it:
+    // a build without it is broken, not the user's input.
+    const SolverInfo &
+    unique_method(bool SolverInfo::*property, const std::string &what)
+    {
+      const SolverInfo *found = nullptr;
+      for (const SolverInfo &info : SolverRegistry::all())
+        if (info.*property)
+          {
+            if (found != nullptr)
+              throw std::logic_error("two methods are registered as " + what +
+                                     ": " + found->name + " and " +
+                                     info.name);
+            found = &info;
+          }
+      if (found == nullptr)
+        throw std::logic_error("no method is registered as " + what);
+      return *found;
+    }
+
+    // "a, b and c" of the methods with @p property (for help texts).
+    std::string
+    methods_where(const std::function<bool(const SolverInfo &)> &property)
+    {
+      std::vector<std::string> names;
+      for (const SolverInfo &info : SolverRegistry::all())
+        if (property(info))
+          names.push_back(info.name);
+      std::string result;
+      for (std::size_t k = 0; k < names.size(); ++k)
+        result += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") +
+                  names[k];
+      return result;
+    }
+
+    // "a: 500, b: 10|S| + 100" (for the help of 'Maximum iterations').
+    std::string
+    default_iteration_limits()
+    {
+      std::string result;
+      for (const SolverInfo &info : SolverRegistry::all())
+        if (!info.default_iterations.empty())
+          result += (result.empty() ? "" : ", ") + info.name + ": " +
+                    info.default_iterations;
+      return result;
+    }
+
+    // "pdas that stops as cycling continues from interior_point's answer"
+    // (for the help of 'Maximum iterations').
+    std::string
+    hand_overs_at_default_limit()
+    {
+      std::string result;
+      for (const SolverInfo &info : SolverRegistry::all())
+        for (const FollowUp &follow_up : info.follow_ups)
+          if (follow_up.kind == FollowUp::Kind::hand_over &&
+              follow_up.only_at_default_limit)
+            result += (result.empty() ? "" : "; ") + info.name +
+                      " that stops without settling continues from " +
+                      follow_up.method + "'s answer";
+      return result.empty() ? "no method hands over" : result;
+    }
+  } // namespace
+
+  const SolverInfo &
+  default_method()
+  {
+    return unique_method(&SolverInfo::is_default, "the default method");
+  }
+
+  const SolverInfo &
+  projection_method()
+  {
+    return unique_method(&SolverInfo::finishes_approximate_answers,
+                         "the projection step's method");
+  }
+
+  void
+  MethodParameters::check(const std::string &) const
+  {}
+
+  SolverParameters::SolverParameters()
+    : method(default_method().name)
+  {
+    for (const SolverInfo &info : SolverRegistry::all())
+      methods[info.name] = info.make_parameters();
+  }
+
+  SolverParameters::SolverParameters(const SolverParameters &other)
+  {
+    *this = other;
+  }
+
+  SolverParameters &
+  SolverParameters::operator=(const SolverParameters &other)
+  {
+    if (this == &other)
+      return *this;
+    method           = other.method;
+    schur_complement = other.schur_complement;
+    regularisation   = other.regularisation;
+    projection       = other.projection;
+    max_iterations   = other.max_iterations;
+    max_dense_size   = other.max_dense_size;
+    kkt_tolerance    = other.kkt_tolerance;
+    methods.clear();
+    for (const auto &[name, options] : other.methods)
+      methods[name] = options->clone();
+    return *this;
+  }
+
+  SolverParameters::~SolverParameters() = default;
+
+  const MethodParameters &
+  SolverParameters::of(const std::string &name) const
+  {
+    const auto found = methods.find(name);
+    if (found == methods.end())
+      return *methods.at(SolverRegistry::get(name).name); // throws
+    return *found->second;
+  }
+
+  void
+  SolverParameters::set(const std::string &entry, const std::string &value)
+  {
+    const std::size_t slash = entry.rfind('/');
+    const std::string subsection =
+      slash == std::string::npos ? "" : entry.substr(0, slash);
+    const std::string name = entry.substr(slash + 1);
+    for (const SolverInfo &info : SolverRegistry::all())
+      if (!subsection.empty() && info.subsection == subsection)
+        {
+          // A handler of this method's entries alone, bound to its options
+          // (their current values are the defaults): set() runs the binding.
+          dealii::ParameterHandler prm;
+          MethodParameters        &options = *methods.at(info.name);
+          options.add_parameters(prm);
+          try
+            {
+              prm.set(name, value);
+            }
+          catch (const std::exception &)
+            {
+              throw InputError("parameter 'Solver/" + entry + "' = " + value +
+                               ": no such entry, or the value does not match "
+                               "its pattern; see unilateral "
+                               "--print-parameters");
+            }
+          options.check("Solver/" + subsection);
+          return;
+        }
+    throw InputError("parameter 'Solver/" + entry +
+                     "': no method has the subsection '" + subsection + "'");
+  }
+
+  void
+  SolverParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii::Patterns;
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Method",
+                      default_method().name,
+                      Selection(SolverRegistry::selection()),
+                      "The LCP algorithm.\n" + SolverRegistry::documentation());
+    prm.declare_entry(
+      "Schur complement",
+      "false",
+      Bool(),
+      "Eliminate the unconstrained unknowns E and solve the reduced, dense "
+      "LCP on the constrained set S (Ainsworth & Mihai, eqs. 3.13-3.18), "
+      "then recover u_E = A_EE^-1 (b_E - A_ES u_S). Needs A_EE nonsingular "
+      "and |S| <= 'Maximum dense size'.");
+    prm.declare_entry(
+      "Regularisation",
+      "auto",
+      Anything(),
+      "eps of the regularised matrix A + eps d I, where d is the mean of the "
+      "diagonal of A (so eps is unit-free). Used only by methods that need a "
+      "positive definite matrix (" +
+        methods_where([](const SolverInfo &info) {
+          return info.needs_definite_matrix;
+        }) +
+        "), followed by the projection step. 'auto' takes 1e-9 where the "
+        "scene's bodies can float (masonry: blocks are free to move, so A is "
+        "singular) and 0 elsewhere (the plate, LCP files), where 1e-9 follows "
+        "if the method meets a singular system. A number >= 0 overrides it.");
+    prm.declare_entry(
+      "Projection",
+      "true",
+      Bool(),
+      "After solving the regularised problem, run " +
+        projection_method().label +
+        " on the original A from u_eps (Ainsworth & Mihai, Section 4): it "
+        "recovers the exact solution, usually in one iteration. The same "
+        "step follows the approximate methods (" +
+        methods_where([](const SolverInfo &info) { return !info.exact; }) +
+        "), as Ainsworth & Mihai suggest for PDPC, and an exact method whose "
+        "answer fails the KKT check. Switch it off to see a method's own "
+        "answer (a regularised one is then reported 'inaccurate').");
+    prm.declare_entry(
+      "Maximum iterations",
+      "0",
+      Integer(0),
+      "Iteration limit of the method; 0 takes each method's default (" +
+        default_iteration_limits() +
+        "). Reaching it is reported as status 'iteration limit', never as a "
+        "solution; at 0, " +
+        hand_overs_at_default_limit() + ".");
+    prm.declare_entry(
+      "Maximum dense size",
+      "6000",
+      Integer(1),
+      "Largest number of unknowns a dense path takes (" +
+        methods_where([](const SolverInfo &info) { return info.dense; }) +
+        ", Schur complement); larger problems are refused with a message "
+        "instead of exhausting memory. Memory is about 16 n^2 bytes.");
+    prm.declare_entry(
+      "KKT tolerance",
+      "1e-8",
+      Double(0),
+      "A method that reports convergence while the relative KKT residuals "
+      "of its answer exceed this gets status 'inaccurate': no wrong answer "
+      "is printed as converged.");
+    for (const SolverInfo &info : SolverRegistry::all())
+      if (!info.subsection.empty())
+        {
+          prm.enter_subsection(info.subsection);
+          methods.at(info.name)->add_parameters(prm);
+          prm.leave_subsection();
+        }
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    method           = prm.get("Method");
+    schur_complement = prm.get_bool("Schur complement");
+    const std::string eps = prm.get("Regularisation");
+    if (eps == "auto")
+      regularisation = -1;
+    else
+      {
+        std::size_t used = 0;
+        try
+          {
+            regularisation = std::stod(eps, &used);
+          }
+        catch (const std::exception &)
+          {
+            used = 0;
+          }
+        check_parameter(used == eps.size() && used > 0,
+                        "Solver",
+                        "Regularisation",
+                        eps,
+                        "must be 'auto' or a number >= 0");
+        check_parameter(regularisation >= 0,
+                        "Solver",
+                        "Regularisation",
+                        eps,
+                        "must be >= 0 (eps < 0 would make A + eps I "
+                        "indefinite)");
+      }
+    projection     = prm.get_bool("Projection");
+    max_iterations = prm.get_integer("Maximum iterations");
+    max_dense_size = prm.get_integer("Maximum dense size");
+    kkt_tolerance  = prm.get_double("KKT tolerance");
+    prm.leave_subsection();
+    // The methods' own entries were parsed into their options by the
+    // bindings of declare_parameters(); what patterns cannot check:
+    for (const SolverInfo &info : SolverRegistry::all())
+      if (!info.subsection.empty())
+        methods.at(info.name)->check("Solver/" + info.subsection);
+    // The Selection pattern admits only registered names; the registry's
+    // message is the better one if that ever changes.
+    SolverRegistry::get(method);
+  }
+} // namespace unilateral::lcp
