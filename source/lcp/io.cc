@@ -152,6 +152,17 @@ namespace unilateral::lcp
       fail(file_name, line_number,
            "file ends after " + std::to_string(read) + " of " +
              std::to_string(entries) + " entries");
+    // An entry beyond the announced count would be dropped silently, and
+    // the matrix would differ from the file.
+    while (std::getline(in, line))
+      {
+        ++line_number;
+        if (!is_comment_or_blank(line))
+          fail(file_name, line_number,
+               "more entries than the " + std::to_string(entries) +
+                 " the size line announces; correct the count or remove "
+                 "the extra entries");
+      }
 
     SparseMatrix A(static_cast<Index>(rows), static_cast<Index>(cols));
     A.setFromTriplets(triplets.begin(), triplets.end());
