@@ -123,12 +123,33 @@ namespace unilateral
       return 0;
     }
 
+    // True if @p parameter_file holds nothing but blanks and comments.
+    bool
+    sets_nothing(const std::string &parameter_file)
+    {
+      std::ifstream in(parameter_file);
+      std::string   line;
+      while (std::getline(in, line))
+        {
+          const auto first = line.find_first_not_of(" \t\r");
+          if (first != std::string::npos && line[first] != '#')
+            return false;
+        }
+      return true;
+    }
+
     int
     run(const std::string &parameter_file, std::ostream &out)
     {
-      if (!std::filesystem::is_regular_file(parameter_file))
+      if (std::filesystem::is_directory(parameter_file))
+        throw InputError("cannot read parameter file '" + parameter_file +
+                         "': a directory, not a file");
+      if (!std::filesystem::exists(parameter_file))
         throw InputError("cannot read parameter file '" + parameter_file +
                          "': no such file");
+      if (!std::filesystem::is_regular_file(parameter_file))
+        throw InputError("cannot read parameter file '" + parameter_file +
+                         "': not a file");
       dealii::ParameterHandler prm;
       declare_parameters(prm);
       prm.parse_input(parameter_file);
@@ -183,6 +204,12 @@ namespace unilateral
       context.progress = progress ? &out : nullptr;
       context.timer    = &timer;
 
+      // Valid, but surprising: say so.
+      if (sets_nothing(parameter_file))
+        out << "unilateral: note: '" << parameter_file
+            << "' sets no parameter: running the default scene ("
+            << scene_info.name << ") with every default; see unilateral "
+            << "--print-parameters" << std::endl;
       out << "unilateral: scene " << scene_info.name << ", run '"
           << context.run_name << "'" << std::endl;
       lcp::Report report;
@@ -218,7 +245,19 @@ namespace unilateral
     try
       {
         const std::string first = argc > 1 ? argv[1] : "";
-        if (argc < 2 || first == "--help" || first == "-h")
+        const bool        help  = first == "--help" || first == "-h";
+        // --help takes nothing after it, --print-parameters one format.
+        const int most = help ? 2 : first == "--print-parameters" ? 3 : argc;
+        if (argc > most)
+          {
+            std::string before = first;
+            for (int k = 2; k < most; ++k)
+              before += std::string(" ") + argv[k];
+            throw InputError("unexpected argument '" +
+                             std::string(argv[most]) + "' after " + before +
+                             "; see unilateral --help");
+          }
+        if (argc < 2 || help)
           {
             (argc < 2 ? err : out) << usage_text;
             return argc < 2 ? 1 : 0;
