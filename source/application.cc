@@ -67,8 +67,10 @@ namespace unilateral
         prm.declare_entry("Run name",
                           "",
                           dealii::Patterns::Anything(),
-                          "Name of this run's subdirectory; empty takes the "
-                          "parameter file's name without extension.");
+                          "Name of this run's subdirectory of 'Directory' "
+                          "(a plain name: no '/' or '\\', not '.' or "
+                          "'..'); empty takes the parameter file's name "
+                          "without extension.");
         prm.declare_entry("Write VTU",
                           "true",
                           dealii::Patterns::Bool(),
@@ -165,6 +167,16 @@ namespace unilateral
       if (context.run_name.empty())
         context.run_name =
           std::filesystem::path(parameter_file).stem().string();
+      check_parameter(context.run_name.find_first_of("/\\") ==
+                          std::string::npos &&
+                        context.run_name != "." && context.run_name != "..",
+                      "Output",
+                      "Run name",
+                      context.run_name,
+                      "must be a plain name without '/' or '\\', and not "
+                      "'.' or '..' (it names the run's subdirectory of "
+                      "'Output/Directory'); to write elsewhere, set "
+                      "'Output/Directory'");
       context.write_vtu     = prm.get_bool("Write VTU");
       context.export_lcp    = prm.get_bool("Export LCP");
       context.write_solution = prm.get_bool("Write solution");
