@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 namespace unilateral
@@ -70,7 +71,12 @@ namespace unilateral
                           "Name of this run's subdirectory of 'Directory' "
                           "(a plain name: no '/' or '\\', not '.' or "
                           "'..'); empty takes the parameter file's name "
-                          "without extension.");
+                          "without extension. A run first removes from it "
+                          "the files an earlier run wrote there "
+                          "(summary.json, parameters.prm, *.vtu, *.pvtu, "
+                          "*.pvd, u.txt, lambda.txt, active_set.txt, "
+                          "lcp_A.mtx, lcp_b.txt, lcp_constraints.txt) and "
+                          "nothing else.");
         prm.declare_entry("Write VTU",
                           "true",
                           dealii::Patterns::Bool(),
@@ -140,6 +146,42 @@ namespace unilateral
       return true;
     }
 
+    /**
+     * Remove from @p directory the files an earlier run wrote there (the
+     * scenes' outputs, grep write_vtu, write_pvd_record, write_vector and
+     * write_summary, and the copy of the parameter file), so that they
+     * cannot be taken for this run's: a masonry solution_000.vtu beside a
+     * plate summary.json. Other files and all folders are kept, and so is
+     * @p parameter_file if it lies there.
+     */
+    void
+    remove_earlier_outputs(const std::filesystem::path &directory,
+                           const std::string           &parameter_file)
+    {
+      const std::set<std::string> names = {"summary.json",
+                                           "parameters.prm",
+                                           "u.txt",
+                                           "lambda.txt",
+                                           "active_set.txt",
+                                           "lcp_A.mtx",
+                                           "lcp_b.txt",
+                                           "lcp_constraints.txt"};
+      const std::set<std::string> extensions = {".vtu", ".pvtu", ".pvd"};
+      for (const auto &entry : std::filesystem::directory_iterator(directory))
+        {
+          const std::filesystem::path &file = entry.path();
+          std::error_code              error;
+          if (!entry.is_regular_file() ||
+              (names.count(file.filename().string()) == 0 &&
+               extensions.count(file.extension().string()) == 0) ||
+              std::filesystem::equivalent(file, parameter_file, error))
+            continue;
+          if (!std::filesystem::remove(file, error) && error)
+            throw InputError("cannot remove '" + file.string() +
+                             "', left by an earlier run: " + error.message());
+        }
+    }
+
     int
     run(const std::string &parameter_file, std::ostream &out)
     {
@@ -199,11 +241,15 @@ namespace unilateral
                          ": cannot create '" +
                          context.output_directory.string() +
                          "': " + error.message());
-      std::filesystem::copy_file(
-        parameter_file,
-        context.output_directory / "parameters.prm",
-        std::filesystem::copy_options::overwrite_existing,
-        error);
+      remove_earlier_outputs(context.output_directory, parameter_file);
+      // A parameters.prm left now is the file being read (a rerun from the
+      // copy), which is not copied onto itself.
+      if (!std::filesystem::exists(context.output_directory /
+                                   "parameters.prm"))
+        std::filesystem::copy_file(parameter_file,
+                                   context.output_directory /
+                                     "parameters.prm",
+                                   error);
       if (error)
         throw InputError("cannot copy the parameter file into '" +
                          context.output_directory.string() +
