@@ -55,8 +55,9 @@ namespace unilateral
         "Most memory the run may use, in GB; 0: the machine's available "
         "memory. Before building the matrix, ordering it and allocating a "
         "Cholesky factor, the run checks that these fit, and stops with a "
-        "message naming the parameters that make the problem smaller "
-        "instead of being killed by the kernel half-way (exit code 1).");
+        "message naming the parameters that make the problem smaller (and "
+        "this one first where it, not the machine, is the bound) instead of "
+        "being killed by the kernel half-way (exit code 1).");
       prm.enter_subsection("Output");
       {
         prm.declare_entry("Directory",
@@ -182,6 +183,41 @@ namespace unilateral
         }
     }
 
+    // The fix for a run that did not fit into memory: raising 'Memory
+    // limit' where the limit, not the machine, was the bound.
+    std::string
+    memory_fix(const Scene &scene)
+    {
+      return std::string(memory::limit_binds() ?
+                           "raise 'Memory limit' (it is below the machine's "
+                           "available memory) or " :
+                           "") +
+             "make the problem smaller (" + scene.size_parameters() + ")";
+    }
+
+    // A run that failed after its directory was made says so there, so
+    // that the directory is not a puzzle.
+    void
+    write_error_summary(const RunContext  &context,
+                        const std::string &scene,
+                        const std::string &message)
+    {
+      JsonObject summary;
+      summary.set("scene", scene)
+        .set("run_name", context.run_name)
+        .set("status", "error")
+        .set("message", message)
+        .set("converged", false);
+      try
+        {
+          write_summary(context, summary);
+        }
+      catch (const std::exception &)
+        {
+          // The message on stderr is what matters; it follows.
+        }
+    }
+
     int
     run(const std::string &parameter_file, std::ostream &out)
     {
@@ -271,23 +307,29 @@ namespace unilateral
       out << "unilateral: scene " << scene_info.name << ", run '"
           << context.run_name << "'" << std::endl;
       lcp::Report report;
+      std::string failure;
       try
         {
           report = scene->run(context);
         }
       catch (const OutOfMemory &error)
         {
-          throw InputError(std::string(error.what()) +
-                           "; make the problem smaller (" +
-                           scene->size_parameters() + ")");
+          failure = std::string(error.what()) + "; " + memory_fix(*scene);
         }
       catch (const std::bad_alloc &)
         {
-          throw InputError(
-            "out of memory (an allocation failed, " +
-            memory::format(memory::available()) +
-            " left); make the problem smaller (" + scene->size_parameters() +
-            ")");
+          failure = "out of memory (an allocation failed, " +
+                    memory::format(memory::available()) + " left); " +
+                    memory_fix(*scene);
+        }
+      catch (const std::exception &error)
+        {
+          failure = one_line_message(error);
+        }
+      if (!failure.empty())
+        {
+          write_error_summary(context, scene_info.name, failure);
+          throw InputError(failure);
         }
       out << "  results in " << context.output_directory.string() << "/"
           << std::endl;

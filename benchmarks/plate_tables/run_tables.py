@@ -134,7 +134,7 @@ def run(executable, prm, summary_file, measure_memory=False, log=None):
                                      stderr=subprocess.PIPE, text=True)
         process.stdout = open(log).read()
     wall = time.time() - start
-    if not os.path.exists(summary_file):
+    if process.returncode == 1 or not os.path.exists(summary_file):
         sys.exit(f"run failed: {' '.join(command)}\n{process.stdout}\n"
                  f"{process.stderr}")
     summary = json.load(open(summary_file))
