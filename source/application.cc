@@ -1,6 +1,7 @@
 #include <unilateral/application.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
+#include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -27,10 +28,11 @@ namespace unilateral
       "  unilateral --help                  this text\n"
       "\n"
       "A run writes into <Output/Directory>/<Output/Run name>/ (by default\n"
-      "output/<name of FILE>/): summary.json, a copy of FILE.prm, and VTU/PVD\n"
-      "files for ParaView. Exit code: 0 converged, 1 bad input (or a problem\n"
-      "too large for the memory), 2 the solver did not converge (its status\n"
-      "is in summary.json).\n";
+      "output/<name of FILE>/ in the working directory; relative paths in\n"
+      "FILE are taken from FILE's folder): summary.json, a copy of FILE.prm,\n"
+      "and VTU/PVD files for ParaView. Exit code: 0 converged, 1 bad input\n"
+      "(or a problem too large for the memory), 2 the solver did not\n"
+      "converge (its status is in summary.json).\n";
 
     std::string
     default_scene()
@@ -61,11 +63,14 @@ namespace unilateral
       prm.enter_subsection("Output");
       {
         prm.declare_entry("Directory",
-                          "output",
+                          "",
                           dealii::Patterns::FileName(
                             dealii::Patterns::FileName::output),
                           "Where runs write; each run in its own "
-                          "subdirectory named by 'Run name'.");
+                          "subdirectory named by 'Run name'. Empty: output/ "
+                          "in the working directory. A relative path is "
+                          "taken from the folder of the parameter file, like "
+                          "every path in it.");
         prm.declare_entry("Run name",
                           "",
                           dealii::Patterns::Anything(),
@@ -130,6 +135,17 @@ namespace unilateral
         throw InputError("--print-parameters " + format +
                          ": unknown format; use prm or json");
       return 0;
+    }
+
+    // @p directory relative to the working directory (as git shows paths),
+    // whatever folder the parameter file's relative paths started from.
+    std::string
+    shown(const std::filesystem::path &directory)
+    {
+      std::error_code             error;
+      const std::filesystem::path relative =
+        std::filesystem::relative(directory, error);
+      return error || relative.empty() ? directory.string() : relative.string();
     }
 
     // True if @p parameter_file holds nothing but blanks and comments.
@@ -269,7 +285,11 @@ namespace unilateral
       std::unique_ptr<Scene> scene = scene_info.create(prm);
 
       context.output_directory =
-        std::filesystem::path(directory) / context.run_name;
+        std::filesystem::path(directory.empty() ?
+                                "output" :
+                                resolve_relative_to(parameter_file,
+                                                    directory)) /
+        context.run_name;
       std::error_code error;
       std::filesystem::create_directories(context.output_directory, error);
       if (error)
@@ -331,7 +351,7 @@ namespace unilateral
           write_error_summary(context, scene_info.name, failure);
           throw InputError(failure);
         }
-      out << "  results in " << context.output_directory.string() << "/"
+      out << "  results in " << shown(context.output_directory) << "/"
           << std::endl;
       if (context.print_timings)
         timer.print_summary();

@@ -438,6 +438,9 @@ def main():
     parser.add_argument("--large-methods", default="ip_eps6,ip_eps6_raw",
                         help="variants for the 512 x 512 run with psi3, f3")
     arguments = parser.parse_args()
+    # Absolute: the parameter files in results/prm/ name its runs/, and a
+    # relative 'Output/Directory' would be taken from their folder.
+    arguments.results = os.path.abspath(arguments.results)
     os.makedirs(arguments.results, exist_ok=True)
     if not arguments.skip_tables:
         records, methods = tables(arguments, arguments.results)

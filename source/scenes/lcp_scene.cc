@@ -28,16 +28,19 @@ namespace unilateral
                       "",
                       dealii::Patterns::Anything(),
                       "A in Matrix Market coordinate format (real, general or "
-                      "symmetric; 1-based). Relative to the parameter file.");
+                      "symmetric; 1-based). A relative path is taken from "
+                      "the folder of the parameter file.");
     prm.declare_entry("Right-hand side file",
                       "",
                       dealii::Patterns::Anything(),
-                      "b: one number per line.");
+                      "b: one number per line. A relative path is taken "
+                      "from the folder of the parameter file.");
     prm.declare_entry("Constraints file",
                       "",
                       dealii::Patterns::Anything(),
                       "S and its lower bounds: one line 'index lower_bound' "
-                      "per constrained index (1-based).");
+                      "per constrained index (1-based). A relative path is "
+                      "taken from the folder of the parameter file.");
     prm.leave_subsection();
   }
 
