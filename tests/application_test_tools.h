@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -37,7 +38,8 @@ namespace application_test
 
   /// `unilateral arguments...` through run_application.
   inline Result
-  run(const std::vector<std::string> &arguments)
+  run(const std::vector<std::string> &arguments,
+      const std::function<void()>    &before_large_run = {})
   {
     std::vector<std::string> storage = {"unilateral"};
     storage.insert(storage.end(), arguments.begin(), arguments.end());
@@ -49,7 +51,8 @@ namespace application_test
     result.code = unilateral::run_application(static_cast<int>(argv.size()),
                                               argv.data(),
                                               out,
-                                              err);
+                                              err,
+                                              before_large_run);
     result.out  = out.str();
     result.err  = err.str();
     return result;
