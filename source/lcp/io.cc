@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -16,6 +17,10 @@ namespace unilateral::lcp
     std::ifstream
     open_for_reading(const std::string &file_name, const std::string &what)
     {
+      // A directory opens, and reads as an empty file.
+      if (std::filesystem::is_directory(file_name))
+        throw InputError("cannot read " + what + " file '" + file_name +
+                         "': a directory, not a file");
       std::ifstream in(file_name);
       if (!in)
         throw InputError("cannot read " + what + " file '" + file_name +
@@ -272,9 +277,10 @@ namespace unilateral::lcp
           fail(file_name, line_number,
                "index " + si + " appears twice (first on line " +
                  std::to_string(first->second) + ")");
-        if (std::isnan(bound) || bound == std::numeric_limits<double>::infinity())
+        if (!std::isfinite(bound))
           fail(file_name, line_number,
-               "lower bound must be a number (not NaN or +inf)");
+               "lower bound must be a finite number (an index without a "
+               "bound is not listed)");
         indices.push_back(static_cast<Index>(i - 1));
         bounds.push_back(bound);
       }
