@@ -306,7 +306,8 @@ namespace unilateral
       if (context.run_name.empty())
         context.run_name =
           std::filesystem::path(parameter_file).stem().string();
-      check_parameter(context.run_name.find_first_of("/\\") ==
+      check_parameter(!context.run_name.empty() &&
+                        context.run_name.find_first_of("/\\") ==
                           std::string::npos &&
                         context.run_name != "." && context.run_name != "..",
                       "Output",
