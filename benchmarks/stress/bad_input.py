@@ -107,8 +107,8 @@ def case(scene, name, expect, text=None, args=None, files=None,
 # --------------------------------------------------------------------------
 # Checks on a finished run: (passed, note)
 
-def summary_of(run, name="case"):
-    path = os.path.join(run["directory"], "results", name, "summary.json")
+def summary_of(run):
+    path = os.path.join(run["directory"], "results", "case", "summary.json")
     try:
         with open(path) as file:
             return json.load(file)
@@ -360,12 +360,11 @@ def define_cases():
          text=masonry(boundary("    set Gravity = 0\n")))
     case("masonry", "m = 1, one block (plurals, issue)", "valid",
          text=masonry(m=1), check=no_plurals_of_one)
-    for value, scale in [("1e300", 1.0), ("1e200", 1.0), ("1e20", 1.0),
-                         ("1e50", 1.0)]:
+    for value in ["1e300", "1e200", "1e20", "1e50"]:
         case("masonry", f"Young's modulus = {value}: rigid drop (issue)",
              "answer", text=masonry(materials(
                  f"    set Young's modulus = {value}\n")),
-             honest=(2,), check=rigid_drop(scale))
+             honest=(2,), check=rigid_drop())
     case("masonry", "Density = 1e-200: rigid drop, energy x 1e-200 (issue)",
          "answer", text=masonry(materials("    set Density = 1e-200\n")),
          honest=(2,), check=rigid_drop(1e-200))
@@ -597,7 +596,7 @@ def judge(spec, run):
         passed, note = check(run)
         return ("OK" if passed else "WRONG"), note
     if code not in spec["codes"]:
-        return "WRONG", (f"valid input refused" if code == 1 else
+        return "WRONG", ("valid input refused" if code == 1 else
                          f"exit code {code}, expected "
                          + " or ".join(map(str, spec["codes"])))
     if check:
