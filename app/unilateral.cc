@@ -3,6 +3,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <string>
 
 #include <unistd.h>
@@ -17,9 +18,11 @@ namespace
    * malloc's memory with transparent huge pages when its tunable
    * glibc.malloc.hugetlb=1 is set (stack bond m = 225: 22-23.5 s -> 16 s,
    * the same peak memory). glibc reads tunables only at start-up, so the
-   * program restarts itself once with it set. A GLIBC_TUNABLES that names
-   * glibc.malloc.hugetlb already (=0 to switch it off) is left alone; if
-   * the restart fails, the run goes on as it is.
+   * program restarts itself once with it set, when run_application has read
+   * the parameter file and found the problem large enough to gain (the
+   * restart costs 0.4 s: --help, bad input and small runs go without). A
+   * GLIBC_TUNABLES that names glibc.malloc.hugetlb already (=0 to switch it
+   * off) is left alone; if the restart fails, the run goes on as it is.
    */
   void
   restart_with_huge_pages(char **argv)
@@ -39,6 +42,8 @@ namespace
 int
 main(int argc, char **argv)
 {
-  restart_with_huge_pages(argv);
-  return unilateral::run_application(argc, argv);
+  return unilateral::run_application(
+    argc, argv, std::cout, std::cerr, [argv]() {
+      restart_with_huge_pages(argv);
+    });
 }

@@ -1,6 +1,7 @@
 #include <unilateral/application.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
+#include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -8,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 namespace unilateral
@@ -26,10 +28,11 @@ namespace unilateral
       "  unilateral --help                  this text\n"
       "\n"
       "A run writes into <Output/Directory>/<Output/Run name>/ (by default\n"
-      "output/<name of FILE>/): summary.json, a copy of FILE.prm, and VTU/PVD\n"
-      "files for ParaView. Exit code: 0 converged, 1 bad input (or a problem\n"
-      "too large for the memory), 2 the solver did not converge (its status\n"
-      "is in summary.json).\n";
+      "output/<name of FILE>/ in the working directory; relative paths in\n"
+      "FILE are taken from FILE's folder): summary.json, a copy of FILE.prm,\n"
+      "and VTU/PVD files for ParaView. Exit code: 0 converged, 1 bad input\n"
+      "(or a problem too large for the memory), 2 the solver did not\n"
+      "converge (its status is in summary.json).\n";
 
     // The default scene: the masonry wall, the program's first use.
     std::string
@@ -57,21 +60,32 @@ namespace unilateral
         "Most memory the run may use, in GB; 0: the machine's available "
         "memory. Before building the matrix, ordering it and allocating a "
         "Cholesky factor, the run checks that these fit, and stops with a "
-        "message naming the parameters that make the problem smaller "
-        "instead of being killed by the kernel half-way (exit code 1).");
+        "message naming the parameters that make the problem smaller (and "
+        "this one first where it, not the machine, is the bound) instead of "
+        "being killed by the kernel half-way (exit code 1).");
       prm.enter_subsection("Output");
       {
         prm.declare_entry("Directory",
-                          "output",
+                          "",
                           dealii::Patterns::FileName(
                             dealii::Patterns::FileName::output),
                           "Where runs write; each run in its own "
-                          "subdirectory named by 'Run name'.");
+                          "subdirectory named by 'Run name'. Empty: output/ "
+                          "in the working directory. A relative path is "
+                          "taken from the folder of the parameter file, like "
+                          "every path in it.");
         prm.declare_entry("Run name",
                           "",
                           dealii::Patterns::Anything(),
-                          "Name of this run's subdirectory; empty takes the "
-                          "parameter file's name without extension.");
+                          "Name of this run's subdirectory of 'Directory' "
+                          "(a plain name: no '/' or '\\', not '.' or "
+                          "'..'); empty takes the parameter file's name "
+                          "without extension. A run first removes from it "
+                          "the files an earlier run wrote there "
+                          "(summary.json, parameters.prm, *.vtu, *.pvtu, "
+                          "*.pvd, u.txt, lambda.txt, active_set.txt, "
+                          "lcp_A.mtx, lcp_b.txt, lcp_constraints.txt) and "
+                          "nothing else.");
         prm.declare_entry("Write VTU",
                           "true",
                           dealii::Patterns::Bool(),
@@ -127,12 +141,118 @@ namespace unilateral
       return 0;
     }
 
-    int
-    run(const std::string &parameter_file, std::ostream &out)
+    // @p directory relative to the working directory (as git shows paths),
+    // whatever folder the parameter file's relative paths started from.
+    std::string
+    shown(const std::filesystem::path &directory)
     {
-      if (!std::filesystem::is_regular_file(parameter_file))
+      std::error_code             error;
+      const std::filesystem::path relative =
+        std::filesystem::relative(directory, error);
+      return error || relative.empty() ? directory.string() : relative.string();
+    }
+
+    // True if @p parameter_file holds nothing but blanks and comments.
+    bool
+    sets_nothing(const std::string &parameter_file)
+    {
+      std::ifstream in(parameter_file);
+      std::string   line;
+      while (std::getline(in, line))
+        {
+          const auto first = line.find_first_not_of(" \t\r");
+          if (first != std::string::npos && line[first] != '#')
+            return false;
+        }
+      return true;
+    }
+
+    /**
+     * Remove from @p directory the files an earlier run wrote there (the
+     * scenes' outputs, grep write_vtu, write_pvd_record, write_vector and
+     * write_summary, and the copy of the parameter file), so that they
+     * cannot be taken for this run's: a masonry solution_000.vtu beside a
+     * plate summary.json. Other files and all folders are kept, and so is
+     * @p parameter_file if it lies there.
+     */
+    void
+    remove_earlier_outputs(const std::filesystem::path &directory,
+                           const std::string           &parameter_file)
+    {
+      const std::set<std::string> names = {"summary.json",
+                                           "parameters.prm",
+                                           "u.txt",
+                                           "lambda.txt",
+                                           "active_set.txt",
+                                           "lcp_A.mtx",
+                                           "lcp_b.txt",
+                                           "lcp_constraints.txt"};
+      const std::set<std::string> extensions = {".vtu", ".pvtu", ".pvd"};
+      for (const auto &entry : std::filesystem::directory_iterator(directory))
+        {
+          const std::filesystem::path &file = entry.path();
+          std::error_code              error;
+          if (!entry.is_regular_file() ||
+              (names.count(file.filename().string()) == 0 &&
+               extensions.count(file.extension().string()) == 0) ||
+              std::filesystem::equivalent(file, parameter_file, error))
+            continue;
+          if (!std::filesystem::remove(file, error) && error)
+            throw InputError("cannot remove '" + file.string() +
+                             "', left by an earlier run: " + error.message());
+        }
+    }
+
+    // The fix for a run that did not fit into memory: raising 'Memory
+    // limit' where the limit, not the machine, was the bound.
+    std::string
+    memory_fix(const Scene &scene)
+    {
+      return std::string(memory::limit_binds() ?
+                           "raise 'Memory limit' (it is below the machine's "
+                           "available memory) or " :
+                           "") +
+             "make the problem smaller (" + scene.size_parameters() + ")";
+    }
+
+    // A run that failed after its directory was made says so there, so
+    // that the directory is not a puzzle.
+    void
+    write_error_summary(const RunContext  &context,
+                        const std::string &scene,
+                        const std::string &message)
+    {
+      JsonObject summary;
+      summary.set("scene", scene)
+        .set("run_name", context.run_name)
+        .set("status", "error")
+        .set("message", message)
+        .set("converged", false);
+      try
+        {
+          summary.write_file(
+            (context.output_directory / "summary.json").string());
+        }
+      catch (const std::exception &)
+        {
+          // The message on stderr is what matters; it follows.
+        }
+    }
+
+    int
+    run(const std::string           &parameter_file,
+        std::ostream                &out,
+        const std::function<void()> &before_large_run)
+    {
+      if (std::filesystem::is_directory(parameter_file))
+        throw InputError("cannot read parameter file '" + parameter_file +
+                         "': a directory, not a file");
+      if (!std::filesystem::exists(parameter_file))
         throw InputError("cannot read parameter file '" + parameter_file +
                          "': no such file");
+      if (!std::filesystem::is_regular_file(parameter_file))
+        throw InputError("cannot read parameter file '" + parameter_file +
+                         "': not a file");
       RunContext               context;
       dealii::ParameterHandler prm;
       declare_parameters(prm, context.solver);
@@ -148,6 +268,17 @@ namespace unilateral
       if (context.run_name.empty())
         context.run_name =
           std::filesystem::path(parameter_file).stem().string();
+      check_parameter(!context.run_name.empty() &&
+                        context.run_name.find_first_of("/\\") ==
+                          std::string::npos &&
+                        context.run_name != "." && context.run_name != "..",
+                      "Output",
+                      "Run name",
+                      context.run_name,
+                      "must be a plain name without '/' or '\\', and not "
+                      "'.' or '..' (it names the run's subdirectory of "
+                      "'Output/Directory'); to write elsewhere, set "
+                      "'Output/Directory'");
       context.write_vtu     = prm.get_bool("Write VTU");
       context.export_lcp    = prm.get_bool("Export LCP");
       context.write_solution = prm.get_bool("Write solution");
@@ -157,9 +288,15 @@ namespace unilateral
       context.solver.parse_parameters(prm);
 
       std::unique_ptr<Scene> scene = scene_info.create(prm);
+      if (before_large_run && scene->large(parameter_file))
+        before_large_run();
 
       context.output_directory =
-        std::filesystem::path(directory) / context.run_name;
+        std::filesystem::path(directory.empty() ?
+                                "output" :
+                                resolve_relative_to(parameter_file,
+                                                    directory)) /
+        context.run_name;
       std::error_code error;
       std::filesystem::create_directories(context.output_directory, error);
       if (error)
@@ -167,11 +304,15 @@ namespace unilateral
                          ": cannot create '" +
                          context.output_directory.string() +
                          "': " + error.message());
-      std::filesystem::copy_file(
-        parameter_file,
-        context.output_directory / "parameters.prm",
-        std::filesystem::copy_options::overwrite_existing,
-        error);
+      remove_earlier_outputs(context.output_directory, parameter_file);
+      // A parameters.prm left now is the file being read (a rerun from the
+      // copy), which is not copied onto itself.
+      if (!std::filesystem::exists(context.output_directory /
+                                   "parameters.prm"))
+        std::filesystem::copy_file(parameter_file,
+                                   context.output_directory /
+                                     "parameters.prm",
+                                   error);
       if (error)
         throw InputError("cannot copy the parameter file into '" +
                          context.output_directory.string() +
@@ -184,28 +325,40 @@ namespace unilateral
       context.progress = progress ? &out : nullptr;
       context.timer    = &timer;
 
+      // Valid, but surprising: say so.
+      if (sets_nothing(parameter_file))
+        out << "unilateral: note: '" << parameter_file
+            << "' sets no parameter: running the default scene ("
+            << scene_info.name << ") with every default; see unilateral "
+            << "--print-parameters" << std::endl;
       out << "unilateral: scene " << scene_info.name << ", run '"
           << context.run_name << "'" << std::endl;
       lcp::Report report;
+      std::string failure;
       try
         {
           report = scene->run(context);
         }
       catch (const OutOfMemory &error)
         {
-          throw InputError(std::string(error.what()) +
-                           "; make the problem smaller (" +
-                           scene->size_parameters() + ")");
+          failure = std::string(error.what()) + "; " + memory_fix(*scene);
         }
       catch (const std::bad_alloc &)
         {
-          throw InputError(
-            "out of memory (an allocation failed, " +
-            memory::format(memory::available()) +
-            " left); make the problem smaller (" + scene->size_parameters() +
-            ")");
+          failure = "out of memory (an allocation failed, " +
+                    memory::format(memory::available()) + " left); " +
+                    memory_fix(*scene);
         }
-      out << "  results in " << context.output_directory.string() << "/"
+      catch (const std::exception &error)
+        {
+          failure = one_line_message(error);
+        }
+      if (!failure.empty())
+        {
+          write_error_summary(context, scene_info.name, failure);
+          throw InputError(failure);
+        }
+      out << "  results in " << shown(context.output_directory) << "/"
           << std::endl;
       if (context.print_timings)
         timer.print_summary();
@@ -214,12 +367,28 @@ namespace unilateral
   } // namespace
 
   int
-  run_application(int argc, char **argv, std::ostream &out, std::ostream &err)
+  run_application(int                          argc,
+                  char                       **argv,
+                  std::ostream                &out,
+                  std::ostream                &err,
+                  const std::function<void()> &before_large_run)
   {
     try
       {
         const std::string first = argc > 1 ? argv[1] : "";
-        if (argc < 2 || first == "--help" || first == "-h")
+        const bool        help  = first == "--help" || first == "-h";
+        // --help takes nothing after it, --print-parameters one format.
+        const int most = help ? 2 : first == "--print-parameters" ? 3 : argc;
+        if (argc > most)
+          {
+            std::string before = first;
+            for (int k = 2; k < most; ++k)
+              before += std::string(" ") + argv[k];
+            throw InputError("unexpected argument '" +
+                             std::string(argv[most]) + "' after " + before +
+                             "; see unilateral --help");
+          }
+        if (argc < 2 || help)
           {
             (argc < 2 ? err : out) << usage_text;
             return argc < 2 ? 1 : 0;
@@ -233,7 +402,7 @@ namespace unilateral
           throw InputError("expected one parameter file, got " +
                            std::to_string(argc - 1) +
                            " arguments; see unilateral --help");
-        return run(first, out);
+        return run(first, out, before_large_run);
       }
     catch (const std::exception &exception)
       {

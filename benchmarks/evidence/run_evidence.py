@@ -300,7 +300,8 @@ def run_once(executable, prm, run_directory, timeout):
         return {"status": "timeout", "wall": time.time() - start,
                 "message": f"killed after {timeout:.0f} s"}
     wall = time.time() - start
-    if not os.path.exists(summary_file):
+    # Bad input (exit code 1) may leave a summary.json of status "error".
+    if process.returncode == 1 or not os.path.exists(summary_file):
         lines = (process.stderr or process.stdout).strip().splitlines()
         return {"status": "error", "wall": wall, "exit_code":
                 process.returncode,

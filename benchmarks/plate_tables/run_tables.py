@@ -134,7 +134,7 @@ def run(executable, prm, summary_file, measure_memory=False, log=None):
                                      stderr=subprocess.PIPE, text=True)
         process.stdout = open(log).read()
     wall = time.time() - start
-    if not os.path.exists(summary_file):
+    if process.returncode == 1 or not os.path.exists(summary_file):
         sys.exit(f"run failed: {' '.join(command)}\n{process.stdout}\n"
                  f"{process.stderr}")
     summary = json.load(open(summary_file))
@@ -438,6 +438,9 @@ def main():
     parser.add_argument("--large-methods", default="ip_eps6,ip_eps6_raw",
                         help="variants for the 512 x 512 run with psi3, f3")
     arguments = parser.parse_args()
+    # Absolute: the parameter files in results/prm/ name its runs/, and a
+    # relative 'Output/Directory' would be taken from their folder.
+    arguments.results = os.path.abspath(arguments.results)
     os.makedirs(arguments.results, exist_ok=True)
     if not arguments.skip_tables:
         records, methods = tables(arguments, arguments.results)

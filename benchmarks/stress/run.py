@@ -752,7 +752,9 @@ def main():
             print(case.id)
         print(f"{mode}: {len(cases)} cases, {len(runs)} runs")
         return 0
-    runs_directory = os.path.join(arguments.output, "runs")
+    # Absolute: the parameter files in runs/ name it, and a relative
+    # 'Output/Directory' would be taken from their folder.
+    runs_directory = os.path.join(os.path.abspath(arguments.output), "runs")
     os.makedirs(runs_directory, exist_ok=True)
     print(f"{mode}: {len(cases)} cases, {len(runs)} runs", flush=True)
     start = time.time()

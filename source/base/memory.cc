@@ -57,6 +57,12 @@ namespace unilateral::memory
     return machine;
   }
 
+  bool
+  limit_binds()
+  {
+    return limit > 0 && limit - resident() < machine_available();
+  }
+
   void
   require(const double bytes, const std::string &what)
   {

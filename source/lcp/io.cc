@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
 
 namespace unilateral::lcp
 {
@@ -15,6 +17,10 @@ namespace unilateral::lcp
     std::ifstream
     open_for_reading(const std::string &file_name, const std::string &what)
     {
+      // A directory opens, and reads as an empty file.
+      if (std::filesystem::is_directory(file_name))
+        throw InputError("cannot read " + what + " file '" + file_name +
+                         "': a directory, not a file");
       std::ifstream in(file_name);
       if (!in)
         throw InputError("cannot read " + what + " file '" + file_name +
@@ -152,6 +158,17 @@ namespace unilateral::lcp
       fail(file_name, line_number,
            "file ends after " + std::to_string(read) + " of " +
              std::to_string(entries) + " entries");
+    // An entry beyond the announced count would be dropped silently, and
+    // the matrix would differ from the file.
+    while (std::getline(in, line))
+      {
+        ++line_number;
+        if (!is_comment_or_blank(line))
+          fail(file_name, line_number,
+               "more entries than the " + std::to_string(entries) +
+                 " the size line announces; correct the count or remove "
+                 "the extra entries");
+      }
 
     SparseMatrix A(static_cast<Index>(rows), static_cast<Index>(cols));
     A.setFromTriplets(triplets.begin(), triplets.end());
@@ -224,12 +241,16 @@ namespace unilateral::lcp
   void
   read_constraints(const std::string  &file_name,
                    std::vector<Index> &indices,
-                   Vector             &lower_bounds)
+                   Vector             &lower_bounds,
+                   const Index         size)
   {
     std::ifstream       in = open_for_reading(file_name, "constraints");
     std::string         line;
     unsigned int        line_number = 0;
     std::vector<double> bounds;
+    // The line on which each index was first given (duplicates are named
+    // with both lines).
+    std::unordered_map<long long, unsigned int> first_line;
     indices.clear();
     while (std::getline(in, line))
       {
@@ -247,9 +268,19 @@ namespace unilateral::lcp
         if (i < 1 || i > std::numeric_limits<Index>::max())
           fail(file_name, line_number,
                "index " + si + " must be >= 1 (indices are 1-based)");
-        if (std::isnan(bound) || bound == std::numeric_limits<double>::infinity())
+        if (size >= 0 && i > size)
           fail(file_name, line_number,
-               "lower bound must be a number (not NaN or +inf)");
+               "index " + si + " is outside 1.." + std::to_string(size) +
+                 ", the rows of A (indices are 1-based)");
+        if (const auto [first, inserted] = first_line.emplace(i, line_number);
+            !inserted)
+          fail(file_name, line_number,
+               "index " + si + " appears twice (first on line " +
+                 std::to_string(first->second) + ")");
+        if (!std::isfinite(bound))
+          fail(file_name, line_number,
+               "lower bound must be a finite number (an index without a "
+               "bound is not listed)");
         indices.push_back(static_cast<Index>(i - 1));
         bounds.push_back(bound);
       }
@@ -274,10 +305,26 @@ namespace unilateral::lcp
     Problem problem;
     problem.A = read_matrix_market(matrix_file);
     problem.b = read_vector(rhs_file);
+    if (problem.A.rows() == problem.A.cols() &&
+        problem.A.rows() != problem.b.size())
+      throw InputError("dimension mismatch: A in '" + matrix_file + "' is " +
+                       std::to_string(problem.A.rows()) + " x " +
+                       std::to_string(problem.A.cols()) + " but b in '" +
+                       rhs_file + "' has " +
+                       std::to_string(problem.b.size()) + " entries");
     read_constraints(constraints_file,
                      problem.constrained,
-                     problem.lower_bound);
-    check_and_normalise(problem);
+                     problem.lower_bound,
+                     static_cast<Index>(problem.A.rows()));
+    // What is left to find is in A: name its file.
+    try
+      {
+        check_and_normalise(problem);
+      }
+    catch (const InputError &error)
+      {
+        throw InputError("'" + matrix_file + "': " + error.what());
+      }
     return problem;
   }
 

@@ -50,17 +50,18 @@ namespace unilateral::lcp
 
     for (Index i = 0; i < n; ++i)
       if (!std::isfinite(problem.b[i]))
-        fail("b[" + std::to_string(i) + "] is not a finite number");
+        fail("entry " + std::to_string(i + 1) +
+             " of b (counted from 1) is not a finite number");
     for (Index k = 0; k < problem.n_constrained(); ++k)
       {
         const Index i = problem.constrained[k];
         if (i < 0 || i >= n)
-          fail("constrained index " + std::to_string(i) +
-               " is outside 0.." + std::to_string(n - 1));
+          fail("constrained index " + std::to_string(i + 1) +
+               " is outside 1.." + std::to_string(n) + " (counted from 1)");
         if (std::isnan(problem.lower_bound[k]) ||
             problem.lower_bound[k] == std::numeric_limits<double>::infinity())
-          fail("lower bound of index " + std::to_string(i) +
-               " is not a number or +infinity");
+          fail("lower bound of index " + std::to_string(i + 1) +
+               " (counted from 1) is not a number or +infinity");
       }
 
     // Sort S (carrying the bounds along) and reject repeated indices.
@@ -77,8 +78,8 @@ namespace unilateral::lcp
           sorted[k] = problem.constrained[order[k]];
           bounds[k] = problem.lower_bound[order[k]];
           if (k > 0 && sorted[k] == sorted[k - 1])
-            fail("constrained index " + std::to_string(sorted[k]) +
-                 " appears twice in S");
+            fail("constrained index " + std::to_string(sorted[k] + 1) +
+                 " (counted from 1) appears twice in S");
         }
       problem.constrained = std::move(sorted);
       problem.lower_bound = std::move(bounds);
@@ -90,8 +91,9 @@ namespace unilateral::lcp
       for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
         {
           if (!std::isfinite(it.value()))
-            fail("A(" + std::to_string(it.row()) + "," + std::to_string(j) +
-                 ") is not a finite number");
+            fail("the entry of A in row " + std::to_string(it.row() + 1) +
+                 ", column " + std::to_string(j + 1) +
+                 " (counted from 1) is not a finite number");
           max_entry = std::max(max_entry, std::abs(it.value()));
         }
 
@@ -125,10 +127,12 @@ namespace unilateral::lcp
             if (i != j && std::abs(difference) > 1e-12 * max_entry)
               {
                 std::ostringstream message;
-                message << "A is not symmetric: A(" << i << "," << j
-                        << ") - A(" << j << "," << i << ") = " << difference
-                        << "; the LCP needs a symmetric positive "
-                           "semidefinite A";
+                message << "A is not symmetric: its entry in row " << i + 1
+                        << ", column " << j + 1 << " is " << value[k]
+                        << ", the one in row " << j + 1 << ", column "
+                        << i + 1 << " is " << value[k] - difference
+                        << " (counted from 1); the LCP needs a symmetric "
+                           "positive semidefinite A";
                 fail(message.str());
               }
           }
@@ -147,7 +151,8 @@ namespace unilateral::lcp
               if (it.value() < 0)
                 {
                   std::ostringstream message;
-                  message << "A(" << j << "," << j << ") = " << it.value()
+                  message << "the diagonal entry of A in row " << j + 1
+                          << " (counted from 1) is " << it.value()
                           << " < 0: A is not positive semidefinite";
                   fail(message.str());
                 }

@@ -28,16 +28,19 @@ namespace unilateral
                       "",
                       dealii::Patterns::Anything(),
                       "A in Matrix Market coordinate format (real, general or "
-                      "symmetric; 1-based). Relative to the parameter file.");
+                      "symmetric; 1-based). A relative path is taken from "
+                      "the folder of the parameter file.");
     prm.declare_entry("Right-hand side file",
                       "",
                       dealii::Patterns::Anything(),
-                      "b: one number per line.");
+                      "b: one number per line. A relative path is taken "
+                      "from the folder of the parameter file.");
     prm.declare_entry("Constraints file",
                       "",
                       dealii::Patterns::Anything(),
                       "S and its lower bounds: one line 'index lower_bound' "
-                      "per constrained index (1-based).");
+                      "per constrained index (1-based). A relative path is "
+                      "taken from the folder of the parameter file.");
     prm.leave_subsection();
   }
 
@@ -55,6 +58,15 @@ namespace unilateral
           std::pair{"Constraints file", constraints_file}})
       check_parameter(!value.empty(), "LCP", name, "''",
                       "an LCP needs all three files");
+  }
+
+  bool
+  LcpScene::large(const std::string &parameter_file) const
+  {
+    std::error_code error;
+    const auto      bytes = std::filesystem::file_size(
+      resolve_relative_to(parameter_file, matrix_file), error);
+    return !error && bytes >= 20000000;
   }
 
   void

@@ -37,6 +37,11 @@ namespace unilateral
     double
     available();
 
+    /// True if the limit is set and leaves the run less than the machine
+    /// does: then raising 'Memory limit' is the first fix.
+    bool
+    limit_binds();
+
     /**
      * Throw OutOfMemory naming @p what unless @p bytes more fit.
      */

@@ -30,15 +30,18 @@ namespace unilateral::lcp
   void
   write_vector(const Vector &v, const std::string &file_name);
 
+  /// Indices must be >= 1 and given once; with @p size >= 0 also <= size.
   void
   read_constraints(const std::string  &file_name,
                    std::vector<Index> &indices,
-                   Vector             &lower_bounds);
+                   Vector             &lower_bounds,
+                   Index               size = -1);
 
   void
   write_constraints(const Problem &problem, const std::string &file_name);
 
-  /// Read all three files and check_and_normalise() the result.
+  /// Read all three files and check_and_normalise() the result; its errors
+  /// name the matrix file.
   Problem
   read_problem(const std::string &matrix_file,
                const std::string &rhs_file,

@@ -95,6 +95,15 @@ namespace unilateral
     virtual std::string
     size_parameters() const = 0;
 
+    /**
+     * Whether the problem is large enough to gain more from huge pages (see
+     * app/unilateral.cc) than the program's restart costs (0.4 s);
+     * @p parameter_file: where relative file names start. Known from the
+     * parameters, before anything is built.
+     */
+    virtual bool
+    large(const std::string &parameter_file) const = 0;
+
     /// The registered name ("masonry").
     const std::string &
     name() const

@@ -340,6 +340,13 @@ namespace unilateral::masonry
       .set("n_degenerate_contacts", n_degenerate_contacts);
   }
 
+  bool
+  MasonryScene::large(const std::string &) const
+  {
+    return parameters.geometry.m * (1L << parameters.geometry.refinement) >=
+           100;
+  }
+
   std::string
   MasonryScene::size_parameters() const
   {

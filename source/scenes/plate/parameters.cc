@@ -4,10 +4,13 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 namespace unilateral::plate
 {
@@ -61,6 +64,27 @@ namespace unilateral::plate
       std::ostringstream captured;
       std::streambuf    *saved;
     };
+
+    // Whether @p entry of subsection Plate/Material was set in the input.
+    // deal.II tracks this for entries declared with has_to_be_set = true,
+    // and lists those not set by their path, each character outside
+    // [A-Za-z0-9] written as '_' and two hex digits ("Young_27s_20modulus").
+    bool
+    material_entry_set(const dealii::ParameterHandler &prm,
+                       const std::string              &entry)
+    {
+      std::string path = "Plate.Material.";
+      for (const unsigned char c : entry)
+        if (std::isalnum(c))
+          path += static_cast<char>(c);
+        else
+          {
+            char hex[4];
+            std::snprintf(hex, sizeof hex, "_%02x", c);
+            path += hex;
+          }
+      return prm.get_entries_wrongly_not_set().count(path) == 0;
+    }
   } // namespace
 
   std::unique_ptr<dealii::Function<2, double>>
@@ -158,16 +182,21 @@ namespace unilateral::plate
                       dealii::Patterns::Anything(),
                       "steel (E = 21e3 kg/mm^2, nu = 0.28), bronze (11e3, "
                       "0.31), lead (1.8e3, 0.44), or custom to take "
-                      "'Young's modulus' and 'Poisson's ratio' below (which "
-                      "are ignored for a named material).");
+                      "'Young's modulus' and 'Poisson's ratio' below (set "
+                      "beside a named material with other values, they are "
+                      "refused).");
+    // has_to_be_set = true only lets material_entry_set() see whether the
+    // input set them; the defaults stand for custom.
     prm.declare_entry("Young's modulus",
                       "21000",
                       dealii::Patterns::Double(),
-                      "E (kg/mm^2) for Name = custom; > 0.");
+                      "E (kg/mm^2) for Name = custom; > 0.",
+                      true);
     prm.declare_entry("Poisson's ratio",
                       "0.28",
                       dealii::Patterns::Double(),
-                      "nu for Name = custom; in (-1, 0.5).");
+                      "nu for Name = custom; in (-1, 0.5).",
+                      true);
     prm.leave_subsection();
   }
 
@@ -186,6 +215,22 @@ namespace unilateral::plate
       {
         youngs_modulus = named->second.youngs_modulus;
         poisson_ratio  = named->second.poisson_ratio;
+        // A different value set beside a named material would be ignored.
+        for (const auto &[entry, given, own] :
+             {std::tuple{"Young's modulus", E_given, youngs_modulus},
+              std::tuple{"Poisson's ratio", nu_given, poisson_ratio}})
+          {
+            std::ostringstream requirement;
+            requirement << "is used only with 'Plate/Material/Name' = "
+                        << "custom; 'Plate/Material/Name' = " << name
+                        << " has its own (" << own
+                        << "): set Name = custom or remove the line";
+            check_parameter(given == own || !material_entry_set(prm, entry),
+                            section,
+                            entry,
+                            given,
+                            requirement.str());
+          }
         return;
       }
     check_parameter(name == "custom", section, "Name", name,

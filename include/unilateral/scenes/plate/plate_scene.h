@@ -69,6 +69,14 @@ namespace unilateral::plate
              " or 'Elements y' = " + std::to_string(parameters.geometry.n_y);
     }
 
+    /// n1 n2 >= 128^2: a plate of 128 x 128 elements gains 0.9 s from huge
+    /// pages.
+    bool
+    large(const std::string &) const override
+    {
+      return parameters.geometry.n_x * parameters.geometry.n_y >= 128 * 128;
+    }
+
     /// One mesh of the coarse-mesh start (nested iteration), coarsest last.
     struct CoarseLevel
     {
