@@ -28,43 +28,58 @@ namespace unilateral::lcp
     return bound;
   }
 
-  void
-  check_and_normalise(Problem &problem)
+  namespace
   {
-    const Index n = problem.size();
-    auto        fail = [](const std::string &what) { throw InputError(what); };
+    [[noreturn]] void
+    fail(const std::string &what)
+    {
+      throw InputError(what);
+    }
 
-    if (problem.A.rows() != problem.A.cols())
-      fail("LCP matrix A is not square: " + std::to_string(problem.A.rows()) +
-           " x " + std::to_string(problem.A.cols()));
-    if (problem.A.rows() != n)
-      fail("dimension mismatch: A is " + std::to_string(problem.A.rows()) +
-           " x " + std::to_string(problem.A.cols()) + " but b has " +
-           std::to_string(n) + " entries");
-    if (static_cast<Index>(problem.lower_bound.size()) !=
-        problem.n_constrained())
-      fail("dimension mismatch: " +
-           std::to_string(problem.n_constrained()) +
-           " constrained indices but " +
-           std::to_string(problem.lower_bound.size()) + " lower bounds");
+    // A square, b and the bounds of the sizes A and S give.
+    void
+    check_dimensions(const Problem &problem)
+    {
+      const Index n = problem.size();
+      if (problem.A.rows() != problem.A.cols())
+        fail("LCP matrix A is not square: " + std::to_string(problem.A.rows()) +
+             " x " + std::to_string(problem.A.cols()));
+      if (problem.A.rows() != n)
+        fail("dimension mismatch: A is " + std::to_string(problem.A.rows()) +
+             " x " + std::to_string(problem.A.cols()) + " but b has " +
+             std::to_string(n) + " entries");
+      if (static_cast<Index>(problem.lower_bound.size()) !=
+          problem.n_constrained())
+        fail("dimension mismatch: " + std::to_string(problem.n_constrained()) +
+             " constrained indices but " +
+             std::to_string(problem.lower_bound.size()) + " lower bounds");
+    }
 
-    for (Index i = 0; i < n; ++i)
-      if (!std::isfinite(problem.b[i]))
-        fail("entry " + std::to_string(i + 1) +
-             " of b (counted from 1) is not a finite number");
-    for (Index k = 0; k < problem.n_constrained(); ++k)
-      {
-        const Index i = problem.constrained[k];
-        if (i < 0 || i >= n)
-          fail("constrained index " + std::to_string(i + 1) +
-               " is outside 1.." + std::to_string(n) + " (counted from 1)");
-        if (std::isnan(problem.lower_bound[k]) ||
-            problem.lower_bound[k] == std::numeric_limits<double>::infinity())
-          fail("lower bound of index " + std::to_string(i + 1) +
-               " (counted from 1) is not a number or +infinity");
-      }
+    // b finite, S within 1..n, bounds finite or -infinity.
+    void
+    check_b_and_bounds(const Problem &problem)
+    {
+      const Index n = problem.size();
+      for (Index i = 0; i < n; ++i)
+        if (!std::isfinite(problem.b[i]))
+          fail("entry " + std::to_string(i + 1) +
+               " of b (counted from 1) is not a finite number");
+      for (Index k = 0; k < problem.n_constrained(); ++k)
+        {
+          const Index i = problem.constrained[k];
+          if (i < 0 || i >= n)
+            fail("constrained index " + std::to_string(i + 1) +
+                 " is outside 1.." + std::to_string(n) + " (counted from 1)");
+          if (std::isnan(problem.lower_bound[k]) ||
+              problem.lower_bound[k] == std::numeric_limits<double>::infinity())
+            fail("lower bound of index " + std::to_string(i + 1) +
+                 " (counted from 1) is not a number or +infinity");
+        }
+    }
 
-    // Sort S (carrying the bounds along) and reject repeated indices.
+    // S sorted (the bounds carried along), no index twice.
+    void
+    sort_constrained(Problem &problem)
     {
       std::vector<Index> order(problem.n_constrained());
       std::iota(order.begin(), order.end(), 0);
@@ -85,39 +100,48 @@ namespace unilateral::lcp
       problem.lower_bound = std::move(bounds);
     }
 
-    problem.A.makeCompressed();
-    double max_entry = 0;
-    for (Index j = 0; j < n; ++j)
-      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-        {
-          if (!std::isfinite(it.value()))
-            fail("the entry of A in row " + std::to_string(it.row() + 1) +
-                 ", column " + std::to_string(j + 1) +
-                 " (counted from 1) is not a finite number");
-          max_entry = std::max(max_entry, std::abs(it.value()));
-        }
+    // Every entry of A finite; returns the largest magnitude.
+    double
+    check_finite_entries(const Problem &problem)
+    {
+      const Index n         = problem.size();
+      double      max_entry = 0;
+      for (Index j = 0; j < n; ++j)
+        for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+          {
+            if (!std::isfinite(it.value()))
+              fail("the entry of A in row " + std::to_string(it.row() + 1) +
+                   ", column " + std::to_string(j + 1) +
+                   " (counted from 1) is not a finite number");
+            max_entry = std::max(max_entry, std::abs(it.value()));
+          }
+      return max_entry;
+    }
 
     // Symmetry, relative to the largest entry: every entry against its
     // mirror, found by bisection in the mirror's column (no transposed copy:
     // at a million unknowns building A - A^T cost seconds).
+    void
+    check_symmetry(Problem &problem, const double max_entry)
     {
-      bool sorted = true;
+      const Index n      = problem.size();
+      bool        sorted = true;
       for (Index j = 0; j < n && sorted; ++j)
-        sorted = std::is_sorted(
-          problem.A.innerIndexPtr() + problem.A.outerIndexPtr()[j],
-          problem.A.innerIndexPtr() + problem.A.outerIndexPtr()[j + 1]);
+        sorted = std::is_sorted(problem.A.innerIndexPtr() +
+                                  problem.A.outerIndexPtr()[j],
+                                problem.A.innerIndexPtr() +
+                                  problem.A.outerIndexPtr()[j + 1]);
       if (!sorted) // a transposition sorts every column
         problem.A =
           SparseMatrix(SparseMatrix(problem.A.transpose()).transpose());
       const auto *const column_start = problem.A.outerIndexPtr();
       const auto *const row_index    = problem.A.innerIndexPtr();
       const double     *value        = problem.A.valuePtr();
-      const auto mirror = [&](const Index i, const Index j) {
+      const auto        mirror       = [&](const Index i, const Index j) {
         const auto *first = row_index + column_start[i];
         const auto *last  = row_index + column_start[i + 1];
         const auto *found = std::lower_bound(first, last, j);
-        return (found != last && *found == j) ? value[found - row_index]
-                                               : 0.0;
+        return (found != last && *found == j) ? value[found - row_index] : 0.0;
       };
       for (Index j = 0; j < n; ++j)
         for (auto k = column_start[j]; k < column_start[j + 1]; ++k)
@@ -129,8 +153,8 @@ namespace unilateral::lcp
                 std::ostringstream message;
                 message << "A is not symmetric: its entry in row " << i + 1
                         << ", column " << j + 1 << " is " << value[k]
-                        << ", the one in row " << j + 1 << ", column "
-                        << i + 1 << " is " << value[k] - difference
+                        << ", the one in row " << j + 1 << ", column " << i + 1
+                        << " is " << value[k] - difference
                         << " (counted from 1); the LCP needs a symmetric "
                            "positive semidefinite A";
                 fail(message.str());
@@ -140,38 +164,55 @@ namespace unilateral::lcp
 
     // Every diagonal entry must be in the pattern (the factorisations modify
     // it in place) and nonnegative (a necessary condition for A >= 0).
-    bool diagonal_complete = true;
-    for (Index j = 0; j < n && diagonal_complete; ++j)
-      {
-        bool found = false;
-        for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-          if (it.row() == j)
+    void
+    check_and_complete_diagonal(Problem &problem)
+    {
+      const Index n                 = problem.size();
+      bool        diagonal_complete = true;
+      for (Index j = 0; j < n; ++j)
+        {
+          bool found = false;
+          for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+            if (it.row() == j)
+              {
+                found = true;
+                if (it.value() < 0)
+                  {
+                    std::ostringstream message;
+                    message << "the diagonal entry of A in row " << j + 1
+                            << " (counted from 1) is " << it.value()
+                            << " < 0: A is not positive semidefinite";
+                    fail(message.str());
+                  }
+              }
+          diagonal_complete = diagonal_complete && found;
+        }
+      if (!diagonal_complete)
+        {
+          std::vector<Eigen::Triplet<double, Index>> entries;
+          entries.reserve(problem.A.nonZeros() + n);
+          for (Index j = 0; j < n; ++j)
             {
-              found = true;
-              if (it.value() < 0)
-                {
-                  std::ostringstream message;
-                  message << "the diagonal entry of A in row " << j + 1
-                          << " (counted from 1) is " << it.value()
-                          << " < 0: A is not positive semidefinite";
-                  fail(message.str());
-                }
+              entries.emplace_back(j, j, 0.0);
+              for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+                entries.emplace_back(it.row(), j, it.value());
             }
-        diagonal_complete = found;
-      }
-    if (!diagonal_complete)
-      {
-        std::vector<Eigen::Triplet<double, Index>> entries;
-        entries.reserve(problem.A.nonZeros() + n);
-        for (Index j = 0; j < n; ++j)
-          {
-            entries.emplace_back(j, j, 0.0);
-            for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-              entries.emplace_back(it.row(), j, it.value());
-          }
-        problem.A.setFromTriplets(entries.begin(), entries.end());
-        problem.A.makeCompressed();
-      }
+          problem.A.setFromTriplets(entries.begin(), entries.end());
+          problem.A.makeCompressed();
+        }
+    }
+  } // namespace
+
+  void
+  check_and_normalise(Problem &problem)
+  {
+    check_dimensions(problem);
+    check_b_and_bounds(problem);
+    sort_constrained(problem);
+    problem.A.makeCompressed();
+    const double max_entry = check_finite_entries(problem);
+    check_symmetry(problem, max_entry);
+    check_and_complete_diagonal(problem);
   }
 
   double
@@ -183,8 +224,8 @@ namespace unilateral::lcp
   Vector
   multiplier(const Problem &problem, const Vector &u)
   {
-    const Vector      residual = problem.A * u - problem.b;
-    Vector            lambda   = Vector::Zero(problem.size());
+    const Vector residual = problem.A * u - problem.b;
+    Vector       lambda   = Vector::Zero(problem.size());
     for (const Index i : problem.constrained)
       lambda[i] = residual[i];
     return lambda;
@@ -193,10 +234,8 @@ namespace unilateral::lcp
   double
   KktResiduals::max() const
   {
-    return std::max({stationarity,
-                     primal_feasibility,
-                     dual_feasibility,
-                     complementarity});
+    return std::max(
+      {stationarity, primal_feasibility, dual_feasibility, complementarity});
   }
 
   KktResiduals
@@ -211,9 +250,8 @@ namespace unilateral::lcp
       for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
         abs_product[it.row()] += std::abs(it.value() * u[j]);
 
-    double force_scale =
-      problem.b.lpNorm<Eigen::Infinity>() +
-      (n > 0 ? abs_product.lpNorm<Eigen::Infinity>() : 0.0);
+    double force_scale = problem.b.lpNorm<Eigen::Infinity>() +
+                         (n > 0 ? abs_product.lpNorm<Eigen::Infinity>() : 0.0);
     double displacement_scale =
       (n > 0 ? u.lpNorm<Eigen::Infinity>() : 0.0) +
       (problem.n_constrained() > 0 ?
@@ -239,10 +277,8 @@ namespace unilateral::lcp
         const double slack = u[i] - problem.lower_bound[k];
         const double stiffness =
           problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : mean_diagonal;
-        result.primal_feasibility =
-          std::max(result.primal_feasibility, -slack);
-        result.dual_feasibility =
-          std::max(result.dual_feasibility, -lambda[i]);
+        result.primal_feasibility = std::max(result.primal_feasibility, -slack);
+        result.dual_feasibility = std::max(result.dual_feasibility, -lambda[i]);
         result.complementarity =
           std::max(result.complementarity,
                    std::min(std::abs(slack) * stiffness, std::abs(lambda[i])));
