@@ -138,23 +138,24 @@ namespace unilateral::lcp
      * and a product with A, memory-bound) in flops of a numeric
      * factorisation, per entry of L. A nearby factor preconditions CG only
      * if the expected 2 changes + 2 iterations cost less than factorising
-     * anew, and CG stops at that break-even count. Stack bond m = 225
-     * (A_FF: 7.6 GFlop, 7.0e7 entries of L): one iteration 0.155 s against
-     * 1.0 s for a factorisation with its analysis, i.e. 15 flops per entry;
-     * laminae m = 225 (full pattern, no analysis): 43. With no limit, CG
-     * from a factor 14 changes away ran 26 iterations (4.1 s) and failed.
+     * anew, and CG stops at that break-even count: a CG that fails after
+     * more has cost more than the factorisation it must then make anyway.
+     * The solves are memory-bound while the factorisation runs in dense
+     * kernels, so an iteration costs many flops of a factorisation per
+     * entry; 15 is the ratio measured on the stack bond wall's A_FF
+     * (benchmarks/masonry_tables/README.md, "Design measurements").
      */
     static constexpr double cg_iteration_cost = 15;
 
     /// Flops of row modifications, as a fraction of those of a numeric
     /// factorisation, up to which a factor is updated rather than
-    /// recomputed. Modifications run simplicial and memory-bound at 2-5
-    /// GFlop/s, while the supernodal factorisation speeds up with size (8
-    /// GFlop/s on a 90 x 90 plate, 38 on 512 x 512), so the break-even
-    /// fraction falls with size. 0.25 against 0.1: laminae m = 225
-    /// 46.6 -> 40.1 s, 512 x 512 plate 143 -> 149 s, 90 x 90 the same;
-    /// 0.5 gains nothing more. The cost is predicted before the first
-    /// update copies the factor (flops_per_path_entry).
+    /// recomputed. Modifications run simplicial and memory-bound, while
+    /// the supernodal factorisation speeds up with size, so the break-even
+    /// fraction falls with size. 0.25 gains on the walls and costs the
+    /// largest plates little; more gains nothing
+    /// (benchmarks/plate_tables/README.md, "Design measurements"). The
+    /// cost is predicted before the first update copies the factor
+    /// (flops_per_path_entry).
     static constexpr double modification_budget = 0.25;
 
     /// Fraction of fixed indices above which A_FF is factorised on its own.
@@ -178,9 +179,10 @@ namespace unilateral::lcp
 
     /// Whether the simplicial copy the first update makes fits in half the
     /// memory the run has left (memory::available). It doubles the factor's
-    /// memory: a 512 x 512 plate (nnz(L) = 3.8e8) peaks at 12 GB with
-    /// updates and 4.8 GB without (143-149 s against 158 s on 24 GB); on a
-    /// smaller machine it refactorises.
+    /// memory, which on the largest problems sets the run's peak, while
+    /// refactorising instead is only a little slower; on a smaller machine
+    /// it refactorises (benchmarks/plate_tables/README.md, "Design
+    /// measurements").
     bool
     room_for_modified_copy() const;
 
@@ -223,8 +225,9 @@ namespace unilateral::lcp
     /// Modification flops per entry of L on the changed rows' elimination
     /// paths (SparseCholesky::modification_path_entries), as measured in
     /// the last update: predicts the cost of the next one. CHOLMOD's update
-    /// and downdate do about four per entry (3.9-4.0 measured on the plate
-    /// from 90 x 90 to 512 x 512).
+    /// and downdate do about four per entry, whatever the size (measured on
+    /// the plates: benchmarks/plate_tables/README.md, "Design
+    /// measurements").
     double                                  flops_per_path_entry = 4;
   };
 } // namespace unilateral::lcp

@@ -100,7 +100,8 @@ namespace unilateral::lcp
     /// @p column_rows: the rows of column k of the analysed matrix (its
     /// pattern; the values do not matter). They give CHOLMOD the pattern of
     /// row k of L, which it otherwise finds by searching every column
-    /// before k (laminae m = 225: a tenth of the run).
+    /// before k, for every deleted row (what that cost:
+    /// benchmarks/masonry_tables/README.md, "Design measurements").
     bool
     delete_row(Index k, double diagonal,
                const std::vector<Index> &column_rows);
@@ -147,13 +148,11 @@ namespace unilateral::lcp
      * amalgamation parameters nrelax = 16, 64, 128 and zrelax = 0.9, 0.3,
      * 0.1 instead of 4, 16, 48 and 0.8, 0.1, 0.05) merges more columns into
      * each supernode, storing some zeros of L, so that dense kernels do more
-     * of the work. On the walls' A_FF (stack bond m = 225, 0.6 million
-     * unknowns, 7.6 GFlop) a numeric factorisation takes 0.8 s instead of
-     * 1.2 s, for a quarter more memory; on the running bond's interior-point
-     * matrix 2.0 s instead of 2.4 s. Factors that are modified row by row
-     * keep CHOLMOD's default: the simplicial copy and every update would
-     * carry the stored zeros too (laminae m = 225: 1.4 s slower, 4.4 GB
-     * instead of 3.0 GB).
+     * of the work: a faster factorisation for somewhat more memory. Factors
+     * that are modified row by row keep CHOLMOD's default: the simplicial
+     * copy and every update would carry the stored zeros too, and lose more
+     * than the factorisation gains (both measured on the walls:
+     * benchmarks/masonry_tables/README.md, "Design measurements").
      */
     bool relaxed_supernodes = true;
 
@@ -163,12 +162,12 @@ namespace unilateral::lcp
      * flops per entry of L, the threshold at which CHOLMOD's default
      * strategy considers METIS), also analyse in METIS's nested dissection
      * and keep the ordering with fewer flops (a METIS analysis that fails
-     * leaves AMD's). The running bond's interior-point matrix (m = 225): AMD
-     * 31.2 GFlop per factorisation, METIS 12.2 (2.0 against 1.5 s), for 3-4
-     * s of ordering once; stack bond and laminae stay with AMD (221 and 375
-     * flops per entry; METIS would not be faster there). Off by default: a
-     * pattern factorised once (A_FF of one active set) cannot repay the
-     * ordering.
+     * leaves AMD's). A METIS ordering costs several times AMD's, which only
+     * the savings of many factorisations repay, and only where AMD's fronts
+     * are large: the running bond's interior-point matrix, not the stack
+     * bond's or the laminae's (benchmarks/masonry_tables/README.md, "Design
+     * measurements"). Off by default: a pattern factorised once (A_FF of
+     * one active set) cannot repay the ordering.
      */
     bool try_nested_dissection = false;
 
