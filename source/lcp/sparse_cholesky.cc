@@ -42,8 +42,9 @@ namespace unilateral::lcp
     // tril(P A P') of the analysed pattern, kept once a pattern is
     // factorised a second time, and the entry of A each of its entries
     // takes its value from: cholmod_factorize permutes A afresh on every
-    // call (laminae m = 225, 14 factorisations of the full pattern: 5 % of
-    // the main thread in cholmod_transpose_sym).
+    // call, a transpose of the whole matrix that a pattern factorised many
+    // times would pay every time (benchmarks/masonry_tables/README.md,
+    // "Design measurements").
     cholmod_sparse    *permuted = nullptr;
     std::vector<Index> permuted_source;
     unsigned int       factorisations_of_pattern = 0;
@@ -77,22 +78,23 @@ namespace unilateral::lcp
       // CHOLMOD 3 (SuiteSparse 5.12) runs small loops of every supernode
       // (clearing a map, copying a few columns) as OpenMP regions of a
       // compile-time 4 threads, whatever OMP_NUM_THREADS says: on 2 cores
-      // that is millions of thread wake-ups per run (running bond m = 120:
-      // 9.7 million futex calls, a third of the run in the kernel; 42 s ->
-      // 31 s without them). Those regions run serially from here on; the
-      // dense kernels keep BLAS's own threads. Process-wide: nothing else
-      // here uses OpenMP (deal.II runs on TBB).
+      // every such loop wakes threads that have almost nothing to do, and
+      // much of the run is spent in the kernel waking them
+      // (benchmarks/masonry_tables/README.md, "Design measurements"). Those
+      // regions run serially from here on; the dense kernels keep BLAS's
+      // own threads. Process-wide: nothing else here uses OpenMP (deal.II
+      // runs on TBB).
       omp_set_max_active_levels(0);
       cholmod_start(&common);
       // Errors become return codes we check, never prints to stderr.
       common.print          = 0;
       common.error_handler  = nullptr;
       common.quick_return_if_not_posdef = 1;
-      // Orderings: AMD (set per analysis below). Its analysis takes about
-      // 1 s at 0.9 million unknowns where METIS takes 3-5 s, for a few
-      // percent fewer flops on the stack bond and laminae walls; only a
-      // pattern factorised many times tries METIS too, and only where AMD's
-      // fronts are large (try_nested_dissection).
+      // Orderings: AMD (set per analysis below). METIS's nested dissection
+      // takes several times as long and saves few flops on the stack bond
+      // and laminae walls (benchmarks/masonry_tables/README.md, "Design
+      // measurements"); only a pattern factorised many times tries METIS
+      // too, and only where AMD's fronts are large (try_nested_dissection).
     }
 
     ~Implementation()
