@@ -20,9 +20,10 @@ namespace unilateral::lcp
 
     /// A_{:,J} Y_J for the columns J = {j : fixed[j] == of_fixed}: the
     /// coupling of the fixed values, or A on the free part. A loop over J
-    /// alone (a third of the stack bond's columns are fixed) instead of
-    /// Eigen's product of a sparse and a dynamic-width dense matrix, which
-    /// took 5 % of the stack bond's main thread on zeros.
+    /// alone instead of Eigen's product of a sparse and a dynamic-width
+    /// dense matrix, which multiplies every column, the zeros of Y outside
+    /// J included (what that cost on the walls:
+    /// benchmarks/masonry_tables/README.md, "Design measurements").
     DenseMatrix
     multiply_columns(const SparseMatrix      &A,
                      const std::vector<char> &fixed,
@@ -182,8 +183,10 @@ namespace unilateral::lcp
                 reduced.valuePtr()[k] =
                   A.valuePtr()[k] + (i == j ? shift : 0.0);
             }
-        // The one AMD ordering of A serves both ways of factorising (an
-        // analysis that orders A again costs 1.5 s more on laminae m = 225).
+        // The one AMD ordering of A serves both ways of factorising: an
+        // analysis that orders A again would repeat the ordering of the
+        // whole matrix (benchmarks/masonry_tables/README.md, "Design
+        // measurements").
         order_once();
         own_valid = own->cholesky.factorise(reduced, full_ordering, counters);
         return own_valid;
@@ -206,8 +209,9 @@ namespace unilateral::lcp
 
     // A_FF written straight into compressed storage, column by column: the
     // map i -> reduced_index[i] is increasing, so every column stays sorted.
-    // (Eigen's insert() reallocates as it goes; at m = 225 walls that alone
-    // took minutes.)
+    // (Eigen's insert() reallocates as it goes, which makes the assembly
+    // quadratic in the size: benchmarks/README.md, "What looked wrong",
+    // item 1.)
     Index n_entries = 0;
     for (Index j = 0; j < n; ++j)
       if (!fixed[j])
@@ -264,8 +268,9 @@ namespace unilateral::lcp
     std::vector<Index> changed = newly_fixed;
     changed.insert(changed.end(), newly_free.begin(), newly_free.end());
     // The cost is predicted from the factor's structure before anything is
-    // copied or modified (the first modification converts the factor, which
-    // at a million unknowns costs seconds).
+    // copied or modified: the first modification converts the factor, which
+    // on a large factor is itself expensive and wasted if the update is then
+    // abandoned (benchmarks/plate_tables/README.md, "Design measurements").
     const double budget =
       modification_budget * own->cholesky.factorisation_flops();
     if (flops_per_path_entry *
@@ -277,8 +282,9 @@ namespace unilateral::lcp
     // indices free at that moment, so K stays consistent at every step.
     const double flops_before = own->cholesky.modification_flops();
     unsigned int processed    = 0;
-    // A safeguard only: the prediction is close (within 25% on the
-    // factors of work_counters, 3-6 flops per entry on tiny ones).
+    // A safeguard only: the prediction is close (checked against CHOLMOD's
+    // count in tests/lcp/work_counters; benchmarks/plate_tables/README.md,
+    // "Design measurements").
     const auto over_budget = [&]() {
       return own->cholesky.modification_flops() - flops_before > budget;
     };

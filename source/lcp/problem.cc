@@ -120,7 +120,8 @@ namespace unilateral::lcp
 
     // Symmetry, relative to the largest entry: every entry against its
     // mirror, found by bisection in the mirror's column (no transposed copy:
-    // at a million unknowns building A - A^T cost seconds).
+    // building A - A^T costs far more than the comparison on large matrices;
+    // benchmarks/masonry_tables/README.md, "Design measurements").
     void
     check_symmetry(Problem &problem, const double max_entry)
     {
