@@ -91,8 +91,9 @@ namespace unilateral::lcp
 
     // M = A_UU - A_UF A_FF^-1 A_FU. The last term is B' K(X)^-1 B for the
     // sparse B = A_FU, solved forward along the elimination tree only
-    // (inverse_gram): the projection of the running bond m = 225, which
-    // resolves 446 indices, took 11.7 s instead of 25.0 s with full solves.
+    // (inverse_gram): a fraction of a full solve per index, where full
+    // solves pass forward and backward through all of L for each
+    // (benchmarks/masonry_tables/README.md, "Design measurements").
     const std::shared_ptr<const ActiveSetFactor> factor = system.factor();
     if (factor == nullptr || factor->fixed != fixed)
       return SubsetResolution::singular; // not after prepare_factor(fixed)

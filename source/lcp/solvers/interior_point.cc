@@ -18,8 +18,9 @@
  *
  * eps_1 is absolute, and ||C z - F - w|| cannot fall below its rounding
  * floor, about machine epsilon times the size of the terms that cancel
- * (||C z|| + ||F|| + ||w||): 1.4e-10 for the paper's 20 x 20 steel plate in
- * kg and mm, above eps_1 = 1e-10. The test (55) therefore accepts a residual
+ * (||C z|| + ||F|| + ||w||), which on the paper's plates in kg and mm lies
+ * above eps_1 = 1e-10 already at 20 x 20 (benchmarks/plate_tables/README.md,
+ * "Iterations and time"). The test (55) therefore accepts a residual
  * at that floor (100 epsilon times those terms), or one that has stopped
  * falling for three steps with the gap met (the floor is higher on larger
  * meshes); the final KKT check of the driver still judges the answer. A
@@ -36,10 +37,11 @@
  * linear programming", 1996): at the trial step min(1, 1.5 alpha) the
  * products (z - psi)_i w_i outside [0.1, 10] sigma mu are aimed back into
  * that band by one more solve each; a corrector stays only if it lengthens
- * the step by 1 %. On the running bond walls the affine step is cut to
- * 0.2-0.5 by a few badly centred products in every iteration, and the
- * correctors save a fifth of the factorisations (m = 100: 22 -> 18 from
- * Mehrotra's start, 28 -> 23 from (66)).
+ * the step by 1 %. On the running bond walls a few badly centred
+ * products cut the affine step short in nearly every iteration; the
+ * correctors, one solve each with the iteration's factor, save
+ * factorisations (benchmarks/masonry_tables/README.md, "Design
+ * measurements").
  */
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/shifted_system.h>
@@ -379,9 +381,10 @@ namespace unilateral::lcp
        * A z - b on S are moved into the positive orthant by 1.5 times their
        * most negative entries, then each by half the complementarity over
        * the other's sum, so that no product is tiny against the rest.
-       * Running bond m = 100: 18 iterations instead of 23 (m = 225: 20
-       * instead of 25), for the one factorisation it costs. Keeps start
-       * (66) if that matrix is not positive definite.
+       * (66) starts the running bond walls far from feasible; this start
+       * saves more iterations there than the one factorisation it costs
+       * (benchmarks/masonry_tables/README.md, "Design measurements").
+       * Keeps start (66) if that matrix is not positive definite.
        */
       static void
       mehrotra_start(const Problem &problem,

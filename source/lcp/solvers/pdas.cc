@@ -306,9 +306,10 @@ namespace unilateral::lcp
       static constexpr unsigned int wandering_limit = 50;
 
       /// Above max_resolved_subset violated indices, PDAS stops unless the
-      /// fewest violated so far halve within this many iterations (the
-      /// running bond walls at m = 225 do not; the laminae do, and go on to
-      /// converge).
+      /// fewest violated so far halve within this many iterations: long
+      /// enough for a wall that converges slowly (the laminae), short
+      /// enough not to spend many factorisations on one that cycles (the
+      /// running bond; measured in README.md, "PDAS safeguards").
       static constexpr unsigned int halving_window = 8;
 
       /// Wandering: no new low for long, exact resolutions included (a
