@@ -124,8 +124,8 @@ namespace unilateral::lcp
         {
           // A small KKT residual of the answer to A + eps I against A
           // bounds the backward error only; nearly floating bodies turn it
-          // into a forward error 1e4 times larger. Not the user's problem
-          // solved.
+          // into a far larger forward error (benchmarks/stress/README.md,
+          // Results). Not the user's problem solved.
           std::ostringstream message;
           message << std::setprecision(3)
                   << "the answer solves the regularised LCP (A + eps I, eps = "

@@ -46,11 +46,13 @@ namespace unilateral::lcp
    * Its iterate lies strictly inside, with slack s and multiplier lambda
    * both small on the indices that are nearly complementary. PDAS's test
    * s - tau lambda < 0 mixes their units, and on the running bond walls it
-   * called open a few closed contacts that carry almost no force (slack
-   * 5e-8, lambda 1e-5) but hold a brick against rotation: the first system
-   * was singular. Compared in units of their own size, s / |s| <
-   * lambda / |lambda| (Tapia's indicators, scale-free), it errs towards
-   * closing contacts, which the next test reopens safely.
+   * called open a few closed contacts that carry almost no force but hold
+   * a brick against rotation, their tiny slack larger than tau times their
+   * tiny force (benchmarks/masonry_tables/README.md, "Design
+   * measurements"): the first system was singular. Compared in units of
+   * their own size, s / |s| < lambda / |lambda| (Tapia's indicators,
+   * scale-free), it errs towards closing contacts, which the next test
+   * reopens safely.
    */
   std::vector<Index>
   interior_point_active_set(const Problem &problem, const Vector &u);
