@@ -28,8 +28,9 @@ namespace unilateral
       return "the LCP in 'LCP/Matrix file' = " + matrix_file;
     }
 
-    /// A matrix file of 20 MB or more (one of 37 MB gains 1.4 s from huge
-    /// pages).
+    /// A matrix file of 20 MB or more: the size of problem from which huge
+    /// pages gain more than the restart costs (measured: README.md, "How
+    /// the solve works").
     bool
     large(const std::string &parameter_file) const override;
 

@@ -97,7 +97,8 @@ namespace unilateral
 
     /**
      * Whether the problem is large enough to gain more from huge pages (see
-     * app/unilateral.cc) than the program's restart costs (0.4 s);
+     * app/unilateral.cc) than the program's restart costs (README.md, "How
+     * the solve works");
      * @p parameter_file: where relative file names start. Known from the
      * parameters, before anything is built.
      */

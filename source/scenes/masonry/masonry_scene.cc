@@ -241,8 +241,9 @@ namespace unilateral::masonry
     // round-off. Where such contacts alone hold a block (a brick balanced on
     // one node), the LCP has other solutions with the same energy and
     // forces but other displacements, and which one a method returns is
-    // decided by its path (running bond m = 100: two exact answers 6.4e-3
-    // apart in u). Counted so that the summary can say so.
+    // decided by its path (two exact answers of one running bond wall:
+    // README.md, "The masonry scene"). Counted so that the summary can say
+    // so.
     double largest_force = 0;
     for (const ConstraintResult &c : constraints)
       largest_force = std::max(largest_force, std::abs(c.contact_force));

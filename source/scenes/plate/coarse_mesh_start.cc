@@ -3,9 +3,9 @@
  * as many cells per side, evaluate that solution at the nodes of this mesh
  * and start the solver there. The contact set of the coarse plate is the fine
  * one up to a band about one coarse cell wide, so PDAS on the fine mesh
- * starts near the answer instead of swinging through thousands of nodes (90
- * x 90 on psi3: 6 iterations instead of 37), and the rest of the work is
- * done on meshes a quarter, a sixteenth... the size.
+ * starts near the answer instead of swinging through thousands of nodes
+ * (benchmarks/plate_tables/README.md, "Iterations and time"), and the rest
+ * of the work is done on meshes a quarter, a sixteenth... the size.
  */
 #include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/scenes/plate/plate_scene.h>
@@ -137,9 +137,9 @@ namespace unilateral::plate
     // above it, a band of the size of the O(h^2) interpolation error (3e-4
     // at 90 x 90); the test on u would not do, for
     // lambda = A u - b of an interpolated field is noise of either sign.
-    // Measured at 90 x 90 on psi1-psi3: fewer and smaller changes than the
-    // coarse contact set itself (psi3 f1: 6 instead of 7 iterations, 319
-    // instead of 664 changes after the first). Those nodes start on psi.
+    // Measured on psi1-psi3, the band gives fewer and smaller changes than
+    // the coarse contact set itself (benchmarks/plate_tables/README.md,
+    // "Design measurements"). Those nodes start on psi.
     double largest_deflection = 0;
     for (const lcp::Index i : fine.lcp_problem.constrained)
       largest_deflection = std::max(largest_deflection, std::abs(u[i]));

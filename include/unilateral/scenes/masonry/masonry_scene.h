@@ -86,8 +86,8 @@ namespace unilateral::masonry
     std::string
     size_parameters() const override;
 
-    /// m 2^r >= 100: a wall of m = 50 gains 0.35 s from huge pages, of
-    /// m = 100 0.8 s.
+    /// m 2^r >= 100: smaller walls gain less from huge pages than the
+    /// restart costs (measured: README.md, "How the solve works").
     bool
     large(const std::string &parameter_file) const override;
 

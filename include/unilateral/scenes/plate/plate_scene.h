@@ -69,8 +69,8 @@ namespace unilateral::plate
              " or 'Elements y' = " + std::to_string(parameters.geometry.n_y);
     }
 
-    /// n1 n2 >= 128^2: a plate of 128 x 128 elements gains 0.9 s from huge
-    /// pages.
+    /// n1 n2 >= 128^2: from there on huge pages gain more than the
+    /// restart costs (measured: README.md, "How the solve works").
     bool
     large(const std::string &) const override
     {
