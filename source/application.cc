@@ -242,7 +242,8 @@ namespace unilateral
     int
     run(const std::string           &parameter_file,
         std::ostream                &out,
-        const std::function<void()> &before_large_run)
+        const std::function<void()> &before_large_run,
+        std::string                 &failure_line)
     {
       if (std::filesystem::is_directory(parameter_file))
         throw InputError("cannot read parameter file '" + parameter_file +
@@ -362,6 +363,8 @@ namespace unilateral
           << std::endl;
       if (context.print_timings)
         timer.print_summary();
+      if (!report.converged())
+        failure_line = scene->failure_description(report);
       return report.converged() ? 0 : 2;
     }
   } // namespace
@@ -402,7 +405,14 @@ namespace unilateral
           throw InputError("expected one parameter file, got " +
                            std::to_string(argc - 1) +
                            " arguments; see unilateral --help");
-        return run(first, out, before_large_run);
+        std::string failure_line;
+        const int   code = run(first, out, before_large_run, failure_line);
+        if (!failure_line.empty())
+          {
+            out.flush();
+            err << "unilateral: " << failure_line << std::endl;
+          }
+        return code;
       }
     catch (const std::exception &exception)
       {

@@ -156,7 +156,7 @@ namespace unilateral::lcp
                 report.status  = Status::infeasible;
                 report.message = "Graves: the LCP has no solution (Case 2 "
                                  "with M_it >= 0 for all i, row " +
-                                 std::to_string(t) + ")";
+                                 std::to_string(t + 1) + ", counted from 1)";
                 break;
               }
             pivot(M, q, B, {s, t});

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <memory>
 #include <ostream>
+#include <streambuf>
+#include <string>
+#include <utility>
 
 namespace unilateral::lcp
 {
@@ -30,6 +33,49 @@ namespace unilateral::lcp
 
   namespace
   {
+    /**
+     * The progress lines of the projection step, labelled after their
+     * indentation ("    projection: pdas iteration 1: ..."): the method's
+     * own lines would repeat those of the solve before it word for word.
+     */
+    class LabelledLines : public std::streambuf
+    {
+    public:
+      LabelledLines(std::ostream &out, std::string label)
+        : out(out)
+        , label(std::move(label))
+      {}
+
+    protected:
+      int
+      overflow(const int c) override
+      {
+        if (c == traits_type::eof())
+          return c;
+        if (at_line_start && c != ' ')
+          {
+            out << label;
+            at_line_start = false;
+          }
+        if (c == '\n')
+          at_line_start = true;
+        out.put(static_cast<char>(c));
+        return c;
+      }
+
+      int
+      sync() override
+      {
+        out.flush();
+        return 0;
+      }
+
+    private:
+      std::ostream     &out;
+      const std::string label;
+      bool              at_line_start = true;
+    };
+
     // The projection method alone on @p problem.
     Report
     run_projection_method(const Problem          &problem,
@@ -64,7 +110,15 @@ namespace unilateral::lcp
           Report                 &report,
           std::ostream           *progress)
   {
-    PhaseTimer   timer(report, "projection");
+    PhaseTimer timer(report, "projection");
+    std::unique_ptr<LabelledLines> labelled_buffer;
+    std::unique_ptr<std::ostream>  labelled;
+    if (progress != nullptr)
+      {
+        labelled_buffer =
+          std::make_unique<LabelledLines>(*progress, "projection: ");
+        labelled = std::make_unique<std::ostream>(labelled_buffer.get());
+      }
     const double mean_diagonal =
       problem.size() > 0 && problem.A.diagonal().mean() > 0 ?
         problem.A.diagonal().mean() :
@@ -91,7 +145,7 @@ namespace unilateral::lcp
         projection = run_projection_method(problem,
                                            projection_parameters,
                                            solution,
-                                           progress);
+                                           labelled.get());
         report.projection_iterations += projection.iterations;
         report.counters += projection.counters;
         if (projection.converged() || !stage_left)
@@ -106,7 +160,7 @@ namespace unilateral::lcp
         const Report stage = run_projection_method(shifted(problem, eps_k),
                                                    parameters,
                                                    start,
-                                                   progress);
+                                                   labelled.get());
         report.projection_iterations += stage.iterations;
         ++report.continuation_stages;
         report.counters += stage.counters;

@@ -1,7 +1,10 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/text.h>
+#include <unilateral/lcp/answer_checks.h>
 #include <unilateral/lcp/projection.h>
 #include <unilateral/lcp/schur_complement.h>
 #include <unilateral/lcp/solve_lcp.h>
+#include <unilateral/lcp/sparse_cholesky.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -18,6 +21,35 @@ namespace unilateral::lcp
     /// 'Regularisation = auto' on a problem whose bodies can float, and the
     /// retry of a method that met a singular matrix where none was expected.
     constexpr double floating_bodies_regularisation = 1e-9;
+
+    /**
+     * 'Regularisation = auto' where bodies can float: 1e-9, unless that
+     * would hold them. A + eps d I ties every body to its place by a spring
+     * of stiffness eps d; where the bounds let it move by l (a block
+     * settling by its gap), that spring pulls with eps d l against the
+     * loads b, and the regularised answer keeps the bodies where the
+     * springs hold them instead of where the loads take them: a start the
+     * projection may never recover from. So eps d |l| stays below a
+     * hundredth of |b|: eps = min(1e-9, 1e-2 |b| / (d |l|)), down to 1e-14
+     * (below that a factorisation cannot tell A + eps d I from A). The
+     * paper's walls (d |l| / |b| up to a few million) keep 1e-9.
+     */
+    double
+    floating_bodies_eps(const Problem &problem)
+    {
+      const double loads  = problem.b.lpNorm<Eigen::Infinity>();
+      const double bounds = problem.n_constrained() > 0 ?
+                              problem.lower_bound.lpNorm<Eigen::Infinity>() :
+                              0.0;
+      const double spring_at_bounds =
+        (problem.size() > 0 ? std::abs(problem.A.diagonal().mean()) : 0.0) *
+        bounds;
+      if (!(spring_at_bounds > 0) || !(loads > 0))
+        return floating_bodies_regularisation;
+      return std::clamp(1e-2 * loads / spring_at_bounds,
+                        1e-14,
+                        floating_bodies_regularisation);
+    }
 
     /**
      * A method with its options, run as a user would run it: regularised if
@@ -272,8 +304,8 @@ namespace unilateral::lcp
                                      attempt.method->name + " (cycled): ");
               const std::string note =
                 earlier.message + " after " +
-                std::to_string(earlier.iterations) +
-                " iterations; continued from the " + next->method->label +
+                quantity(earlier.iterations, "iteration") +
+                "; continued from the " + next->method->label +
                 "'s answer";
               later.report.message = later.report.message.empty() ?
                                        note :
@@ -290,42 +322,64 @@ namespace unilateral::lcp
     }
 
     /**
-     * A claim the method declares to be verified (Graves' "no solution",
-     * which round-off can produce, as Ainsworth & Mihai report: running
-     * bond, m = 5, without load, where u = 0 solves it) is checked by the
-     * declared method, which never makes such a claim. If that one solves
-     * the LCP, its answer is given and the note says why.
+     * The verification a method declares for an outcome, by another
+     * method: Graves' claim that the LCP has no solution, which round-off
+     * can produce (Ainsworth & Mihai: running bond, m = 5, without load,
+     * where u = 0 solves it), is checked by PDAS, which never makes one;
+     * PDAS that ends on a singular system asks Graves whether the LCP has a
+     * solution at all, which Graves' Case 2 proves or disproves. If the
+     * checking method solves the LCP its answer is given; if it proves
+     * that there is none, the status says so; the note says what happened.
+     * A checking method that cannot take the problem (dense and too large,
+     * or needing every unknown constrained) is not run.
      */
     void
-    verify_claim(const Problem  &problem,
-                 const Attempt  &attempt,
-                 const FollowUp &verification,
-                 Solution       &solution,
-                 Report         &report,
-                 std::ostream   *progress)
+    verify(const Problem  &problem,
+           const Attempt  &attempt,
+           const FollowUp &verification,
+           Solution       &solution,
+           Report         &report,
+           std::ostream   *progress)
     {
-      const Attempt check_attempt = follow_up_attempt(verification, attempt);
-      const std::string &label    = check_attempt.method->label;
+      const Attempt     check_attempt = follow_up_attempt(verification, attempt);
+      const SolverInfo &checker       = *check_attempt.method;
+      if ((checker.dense && static_cast<unsigned int>(problem.size()) >
+                              attempt.parameters.max_dense_size) ||
+          (checker.every_unknown_constrained &&
+           problem.n_constrained() < problem.size()))
+        return;
+      const std::string &label = checker.label;
       Solution           check;
       const Report       check_report =
         run_attempts(problem, check_attempt, check, progress);
       report.counters += check_report.counters;
-      report.add_times(check_report, "infeasibility check: ");
-      if (!check_report.converged() ||
-          !(kkt_residuals(problem, check.u).max() <=
-            attempt.parameters.kkt_tolerance))
+      report.add_times(check_report, "verification: ");
+      if (check_report.converged() &&
+          kkt_residuals(problem, check.u).max() <=
+            attempt.parameters.kkt_tolerance)
         {
-          report.message += "; " + label + " found none either (" +
-                            to_string(check_report.status) + ")";
-          return;
+          report.message +=
+            "; but " + label + " solved it in " +
+            quantity(check_report.iterations +
+                       check_report.projection_iterations,
+                     "iteration") +
+            (report.status == Status::infeasible ?
+               ", so the claim came from round-off" :
+               "") +
+            ": the answer given is " + label + "'s";
+          report.status = Status::converged;
+          solution      = check;
         }
-      report.message += "; but " + label + " solved it in " +
-                        std::to_string(check_report.iterations +
-                                       check_report.projection_iterations) +
-                        " iterations, so the claim came from round-off: the "
-                        "answer given is " + label + "'s";
-      report.status = Status::converged;
-      solution      = check;
+      else if (check_report.status == Status::infeasible)
+        {
+          report.message = check_report.message + "; " +
+                           attempt.method->label + " had ended " +
+                           to_string(report.status);
+          report.status = Status::infeasible;
+        }
+      else
+        report.message += "; " + label + " found none either (" +
+                          to_string(check_report.status) + ")";
     }
 
     // The full LCP: the selected method's attempts, and the verification
@@ -346,8 +400,7 @@ namespace unilateral::lcp
                                parameters,
                                report.status,
                                FollowUp::Kind::verification))
-        verify_claim(
-          problem, first, *verification, solution, report, progress);
+        verify(problem, first, *verification, solution, report, progress);
       return report;
     }
 
@@ -408,56 +461,36 @@ namespace unilateral::lcp
       return report;
     }
 
-    /**
-     * The final check, always against the original problem: lambda, the
-     * active set, KKT residuals and energy from u alone, and 'inaccurate'
-     * for an answer whose method's test passed but whose KKT residuals do
-     * not.
-     */
-    void
-    check_answer(const Problem          &problem,
-                 const SolverParameters &parameters,
-                 Solution               &solution,
-                 Report                 &report)
-    {
-      {
-        PhaseTimer timer(report, "kkt check");
-        if (solution.u.size() != problem.size())
-          solution.u = Vector::Zero(problem.size());
-        solution.lambda = multiplier(problem, solution.u);
-        // An index is active if u sits exactly at its bound (active-set and
-        // pivoting methods put it there) or, for interior-point iterates
-        // that never reach a bound, if its slack is smaller than its
-        // multiplier in the same units (slack times the diagonal of A).
-        solution.active_set.clear();
-        for (Index k = 0; k < problem.n_constrained(); ++k)
-          {
-            const Index  i     = problem.constrained[k];
-            const double slack = solution.u[i] - problem.lower_bound[k];
-            const double scale =
-              problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : 1.0;
-            if (slack == 0 || slack * scale < solution.lambda[i])
-              solution.active_set.push_back(i);
-          }
-        report.n_active = static_cast<unsigned int>(solution.active_set.size());
-        report.kkt      = kkt_residuals(problem, solution.u);
-        report.energy   = energy(problem, solution.u);
-        ++report.counters.matrix_vector_products;
-      }
-      if (report.status == Status::converged &&
-          !(report.kkt.max() <= parameters.kkt_tolerance))
-        {
-          std::ostringstream message;
-          message << std::setprecision(3)
-                  << "the method's stopping test passed but the relative KKT "
-                     "residual is "
-                  << report.kkt.max() << " > 'Solver/KKT tolerance' = "
-                  << parameters.kkt_tolerance;
-          report.status  = Status::inaccurate;
-          report.message = message.str();
-        }
-    }
   } // namespace
+
+  void
+  verify_semidefinite(const Problem &problem)
+  {
+    if (problem.known_semidefinite || problem.size() == 0)
+      return;
+    const double mean_diagonal = problem.A.diagonal().mean();
+    const double shift =
+      semidefinite_shift * (mean_diagonal > 0 ? mean_diagonal : 1.0);
+    SparseMatrix shifted = problem.A;
+    for (Index j = 0; j < problem.size(); ++j)
+      shifted.coeffRef(j, j) += shift;
+    SparseCholesky cholesky;
+    Counters       counters;
+    if (!cholesky.factorise(shifted, counters))
+      {
+        std::ostringstream message;
+        message << std::setprecision(3)
+                << "A is not positive semidefinite: the Cholesky "
+                   "factorisation of A + "
+                << semidefinite_shift
+                << " d I (d the mean of its diagonal) meets a non-positive "
+                   "pivot, so A has an eigenvalue below -"
+                << shift
+                << "; the LCP methods need a symmetric positive semidefinite "
+                   "A (an energy bounded from below)";
+        throw InputError(message.str());
+      }
+  }
 
   Report
   solve_lcp(const Problem          &problem,
@@ -465,6 +498,7 @@ namespace unilateral::lcp
             Solution               &solution,
             std::ostream           *progress)
   {
+    verify_semidefinite(problem);
     Report report =
       parameters.schur_complement ?
         solve_schur_complement(problem, parameters, solution, progress) :
@@ -472,11 +506,11 @@ namespace unilateral::lcp
                    parameters,
                    solution,
                    progress,
-                   problem.floating_bodies ? floating_bodies_regularisation :
+                   problem.floating_bodies ? floating_bodies_eps(problem) :
                                              0.0);
     // Release the last factorisation (it can be large) before returning.
     solution.factor.reset();
-    check_answer(problem, parameters, solution, report);
+    assess_answer(problem, parameters.kkt_tolerance, solution, report);
     return report;
   }
 } // namespace unilateral::lcp

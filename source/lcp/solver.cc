@@ -281,6 +281,12 @@ namespace unilateral::lcp
     max_iterations = prm.get_integer("Maximum iterations");
     max_dense_size = prm.get_integer("Maximum dense size");
     kkt_tolerance  = prm.get_double("KKT tolerance");
+    check_parameter(kkt_tolerance > 0,
+                    "Solver",
+                    "KKT tolerance",
+                    kkt_tolerance,
+                    "must be > 0: a floating-point answer is never exact to "
+                    "the last bit (1e-8, the default, or 1e-10 are usual)");
     prm.leave_subsection();
     // The methods' own entries were parsed into their options by the
     // bindings of declare_parameters(); what patterns cannot check:

@@ -379,6 +379,17 @@ namespace unilateral::lcp
     ++counters.numeric_factorisations;
     impl.factor_valid = (impl.common.status == CHOLMOD_OK &&
                          impl.factor->minor == impl.factor->n);
+    // A simplicial LDL' factorisation (CHOLMOD's choice for small sparse
+    // matrices) stops only at a zero pivot: a negative one, an indefinite
+    // A, completes. Positive definite means D > 0 (D is the first entry of
+    // each column).
+    if (impl.factor_valid && !impl.factor->is_super && !impl.factor->is_ll)
+      {
+        const auto *Lp = static_cast<const Index *>(impl.factor->p);
+        const auto *Lx = static_cast<const double *>(impl.factor->x);
+        for (std::size_t j = 0; j < impl.factor->n && impl.factor_valid; ++j)
+          impl.factor_valid = Lx[Lp[j]] > 0;
+      }
     if (impl.common.status == CHOLMOD_OUT_OF_MEMORY)
       impl.throw_failure("factorisation", A.rows());
     // A factorisation that completes can still be numerically singular: a

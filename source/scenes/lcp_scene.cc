@@ -1,5 +1,6 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/lcp/io.h>
+#include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/scenes/lcp_scene.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -76,6 +77,16 @@ namespace unilateral
       resolve_relative_to(context.parameter_file, matrix_file),
       resolve_relative_to(context.parameter_file, rhs_file),
       resolve_relative_to(context.parameter_file, constraints_file));
+    // Verified here, where the error can name the file.
+    try
+      {
+        lcp::verify_semidefinite(lcp_problem);
+      }
+    catch (const InputError &error)
+      {
+        throw InputError(matrix_file + ": " + error.what());
+      }
+    lcp_problem.known_semidefinite = true;
   }
 
   void

@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/text.h>
 #include <unilateral/lcp/io.h>
 #include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/scenes/scene.h>
@@ -175,7 +176,6 @@ namespace unilateral
                               context.solver,
                               lcp_solution,
                               context.progress);
-      check_work(lcp_problem, lcp_solution, report);
     }
     write_solution_if_requested(context, lcp_solution);
     {
@@ -194,6 +194,29 @@ namespace unilateral
     add_summary(summary);
     summary.write_file((context.output_directory / "summary.json").string());
     return report;
+  }
+
+  std::string
+  Scene::failure_description(const lcp::Report &report) const
+  {
+    switch (report.status)
+      {
+        case lcp::Status::infeasible: // the message says who proved it
+          return report.message;
+        case lcp::Status::singular:
+          return "the solver met a singular system it could not resolve: " +
+                 report.message;
+        case lcp::Status::iteration_limit:
+          return "the solver did not settle within its iteration limit: " +
+                 report.message;
+        case lcp::Status::inaccurate:
+          return "the answer is not accurate enough to be given as "
+                 "converged: " +
+                 report.message;
+        case lcp::Status::converged:
+          break;
+      }
+    return "";
   }
 
   void
@@ -227,52 +250,16 @@ namespace unilateral
   {}
 
   void
-  check_work(const lcp::Problem  &problem,
-             const lcp::Solution &solution,
-             lcp::Report         &report)
-  {
-    if (!report.converged() || solution.u.size() != problem.size())
-      return;
-    // At any solution u^T A u = b^T u + lambda^T u = b^T u + lambda_S^T l_S
-    // (lambda_E = 0 and complementarity), and u^T A u >= 0: the work
-    // W = b^T u - lambda_S^T l_S of the loads and the supports cannot be
-    // negative. The relative KKT residuals are blind to a body that drifted
-    // far away as a rigid motion (A u stays small where |A| |u| is huge),
-    // and W is not: such an answer has W close to -|b|^T |u|.
-    const lcp::Vector lambda = problem.A * solution.u - problem.b;
-    double            work   = problem.b.dot(solution.u);
-    double            scale  = problem.b.cwiseAbs().dot(solution.u.cwiseAbs());
-    for (lcp::Index k = 0; k < problem.n_constrained(); ++k)
-      {
-        const double product =
-          lambda[problem.constrained[k]] * problem.lower_bound[k];
-        work -= product;
-        scale += std::abs(product);
-      }
-    if (work < -1e-6 * scale)
-      {
-        std::ostringstream message;
-        message << std::setprecision(3) << "the answer fails the work check: "
-                << "b^T u - lambda_S^T l_S = " << work
-                << " < 0, but it equals u^T A u >= 0 at every solution (a "
-                   "body drifted away as a rigid motion?)";
-        report.status  = lcp::Status::inaccurate;
-        report.message = message.str() +
-                         (report.message.empty() ? "" : "; " + report.message);
-      }
-  }
-
-  void
   print_solver_summary(std::ostream       &out,
                        const lcp::Problem &problem,
                        const lcp::Report  &report)
   {
     const auto flags     = out.flags();
     const auto precision = out.precision();
-    out << "  LCP: " << problem.size() << " unknowns, "
-        << problem.n_constrained() << " constraints\n"
+    out << "  LCP: " << quantity(problem.size(), "unknown") << ", "
+        << quantity(problem.n_constrained(), "constraint") << "\n"
         << "  solver " << report.solver << ": " << lcp::to_string(report.status)
-        << " after " << report.iterations << " iterations";
+        << " after " << quantity(report.iterations, "iteration");
     if (report.projected)
       out << " + " << report.projection_iterations << " projection";
     out << ", " << report.n_active << " active\n";

@@ -12,8 +12,8 @@
 //    m = 5, g = H/2, E and gravity times k = 1e-6, 1e-3, 1e3, 1e6: the same
 //    status and displacement (1e-8) as k = 1 and the energy times k (1e-10).
 //
-// 2. The work check (unilateral::check_work): at every solution of the LCP
-//    b^T u - lambda_S^T l_S = u^T A u >= 0. A body drifted far away as a
+// 2. The work check (lcp::check_work): at every solution of the LCP
+//    b^T u + lambda_S^T l_S = u^T A u >= 0. A body drifted far away as a
 //    rigid motion passes the relative KKT residuals but not this. Checked on
 //    a two-unknown LCP (a block on a support) with its exact solution and a
 //    drifted one, and on the wall where it happened: stack bond, m = 5,
@@ -35,6 +35,7 @@
 //    its 500-iteration limit. It now resolves small cycles exactly, stops
 //    as cycling when a cycle is too large to resolve and continues from the
 //    interior point's answer. Checked at m = 30 against PDPC alone.
+#include <unilateral/lcp/answer_checks.h>
 #include <unilateral/lcp/problem.h>
 #include <unilateral/lcp/report.h>
 #include <unilateral/scenes/scene.h>
@@ -150,7 +151,7 @@ namespace
         lcp::Report report;
         report.status = lcp::Status::converged;
         report.kkt    = lcp::kkt_residuals(problem, solution.u);
-        unilateral::check_work(problem, solution, report);
+        lcp::check_work(problem, solution, report);
         std::cout << "  u = (" << drift << ", " << drift << " - 1/4): "
                   << "relative KKT <= 1e-8: " << yes_no(report.kkt.max() <= 1e-8)
                   << ", status " << lcp::to_string(report.status) << "\n";

@@ -54,6 +54,11 @@ namespace unilateral::lcp
     /// Most constraints are active at the solution (structures in contact
     /// almost everywhere): 'Solver/PDAS/Start = auto' starts all active.
     bool mostly_active = false;
+    /// A is known to be positive semidefinite: by construction (a stiffness
+    /// matrix assembled from semidefinite element matrices, or a congruence
+    /// of one) or verified (verify_semidefinite): solve_lcp does not
+    /// factorise it to verify that again.
+    bool known_semidefinite = false;
     /// @}
 
     Index

@@ -28,9 +28,26 @@ namespace unilateral::lcp
    *    against the original problem, and the status is downgraded to
    *    "inaccurate" if the method's own test passed but the KKT residuals
    *    exceed kkt_tolerance.
-   * @p problem must have passed check_and_normalise(). A non-empty
+   * @p problem must have passed check_and_normalise(); A is verified to be
+   * positive semidefinite first (verify_semidefinite). A non-empty
    * solution.u of the right size is the start of the methods that take one.
+   * The answer is judged by assess_answer (answer_checks.h).
    */
+  /**
+   * Throws InputError unless A is positive semidefinite (up to
+   * semidefinite_shift of its mean diagonal), which every method assumes:
+   * on an indefinite A they return points that solve nothing (a saddle).
+   * One Cholesky factorisation of A + shift d I; none where the builder
+   * vouches for A (Problem::known_semidefinite).
+   */
+  void
+  verify_semidefinite(const Problem &problem);
+
+  /// The shift of verify_semidefinite, relative to the mean diagonal: below
+  /// the regularisation the methods add, so that what they take for
+  /// semidefinite passes.
+  constexpr double semidefinite_shift = 1e-10;
+
   Report
   solve_lcp(const Problem          &problem,
             const SolverParameters &parameters,

@@ -188,9 +188,10 @@ namespace unilateral::lcp
       /// one (PDAS that cycles continues from the interior point): the
       /// iterations and work of both count, the answer is the other's.
       hand_over,
-      /// Check this method's claim with another method (Graves' "no
-      /// solution" with PDAS): if that one solves the LCP, its answer is
-      /// given and the note says why.
+      /// Check this method's outcome with another method (Graves' "no
+      /// solution" with PDAS, PDAS's singular system with Graves): if that
+      /// one solves the LCP, its answer is given; if it proves that there
+      /// is no solution, the status says so; the note says why.
       verification
     };
 
@@ -242,6 +243,9 @@ namespace unilateral::lcp
     bool needs_definite_matrix = false;
     /// Dense methods refuse problems larger than max_dense_size.
     bool dense = false;
+    /// Solves only LCPs in which every unknown is constrained (Graves):
+    /// others take it on the Schur complement.
+    bool every_unknown_constrained = false;
     /// Ends on an exact complementary basis (active-set and pivoting
     /// methods). Approximate methods (PSOR, interior point) get the
     /// projection step afterwards when 'Projection' is on.

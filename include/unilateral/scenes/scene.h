@@ -105,6 +105,14 @@ namespace unilateral
     virtual bool
     large(const std::string &parameter_file) const = 0;
 
+    /**
+     * One line for the user when the solver did not converge (the
+     * application prints it on stderr): what the status means for this
+     * scene's problem, and the solver's message.
+     */
+    virtual std::string
+    failure_description(const lcp::Report &report) const;
+
     /// The registered name ("masonry").
     const std::string &
     name() const
@@ -208,18 +216,6 @@ namespace unilateral
            return std::make_unique<classname>(prm);                           \
          }});                                                                 \
   }
-
-  /**
-   * A safeguard on a converged answer: at every solution of the LCP the work
-   * W = b^T u - lambda_S^T l_S equals u^T A u >= 0. If W < -1e-6 (|b|^T |u|
-   * + |lambda_S|^T |l_S|), @p report becomes 'inaccurate' with a message.
-   * It catches what the relative KKT residuals cannot see: a body that
-   * drifted far away as a rigid motion (A u small, |A| |u| huge).
-   */
-  void
-  check_work(const lcp::Problem  &problem,
-             const lcp::Solution &solution,
-             lcp::Report         &report);
 
   /// The deterministic part of the one-screen summary (no timings).
   void

@@ -28,6 +28,7 @@
  * The same routine is the projection step when run on A from u_eps.
  */
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/text.h>
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/solver.h>
 #include <unilateral/lcp/subset_resolution.h>
@@ -396,6 +397,14 @@ namespace unilateral::lcp
         hand_over.method                = "interior_point";
         hand_over.settings = {{"Interior point/Variant", "predictor-corrector"}};
         info.follow_ups.push_back(hand_over);
+        // A system that stays singular means that no active set PDAS
+        // tried holds every body: the LCP may have no solution at all,
+        // which Graves' Case 2 proves (where it can take the problem).
+        FollowUp proof;
+        proof.kind   = FollowUp::Kind::verification;
+        proof.when   = Status::singular;
+        proof.method = "graves";
+        info.follow_ups.push_back(proof);
         return info;
       }
 
@@ -510,8 +519,7 @@ namespace unilateral::lcp
             return reason;
         if (iteration >= limit)
           return "PDAS did not settle on an active set in " +
-                 std::to_string(limit) +
-                 " iterations (last change: " +
+                 quantity(limit, "iteration") + " (last change: " +
                  std::to_string(violated.size()) + " indices)";
         return "";
       }

@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/text.h>
 #include <unilateral/scenes/masonry/assembly.h>
 #include <unilateral/scenes/masonry/mesh.h>
 
@@ -85,8 +86,8 @@ namespace unilateral::masonry
     problem_sizes.cell_size    = h;
     problem_sizes.gap          = parameters.boundary.relative_gap * H;
     context.stage(registered_name,
-                  std::to_string(problem_sizes.n_blocks) + " blocks, " +
-                    std::to_string(problem_sizes.n_cells) + " cells");
+                  quantity(problem_sizes.n_blocks, "block") + ", " +
+                    quantity(problem_sizes.n_cells, "cell"));
   }
 
   // Points closer than this are the same point: far above the round-off
@@ -169,8 +170,10 @@ namespace unilateral::masonry
                                loads);
     // Blocks are free to move unless contacts hold them, and a wall is in
     // contact almost everywhere: the solvers' automatic settings for both.
-    lcp_problem.floating_bodies = true;
-    lcp_problem.mostly_active   = true;
+    // A~ = C~^-T A C~^-1 is a congruence of the semidefinite stiffness.
+    lcp_problem.floating_bodies              = true;
+    lcp_problem.mostly_active                = true;
+    lcp_problem.known_semidefinite = true;
 
     // The solvers' force unit (see force_unit()): their tolerances and
     // parameters (PDAS's tau weighs a displacement against a force, the
@@ -296,21 +299,25 @@ namespace unilateral::masonry
     const Sizes &s         = problem_sizes;
     out << "  masonry: " << state->layout.name
         << ", m = " << parameters.geometry.m << " (H = " << s.block_height
-        << "), " << s.n_blocks << " blocks, "
-        << to_string(parameters.geometry.element) << " on " << s.n_cells
-        << " cells (refinement " << parameters.geometry.refinement
+        << "), " << quantity(s.n_blocks, "block") << ", "
+        << to_string(parameters.geometry.element) << " on "
+        << quantity(s.n_cells, "cell") << " (refinement "
+        << parameters.geometry.refinement
         << ", h = " << s.cell_size << ")\n"
-        << "  supports: " << s.n_dirichlet << " Dirichlet DOFs, "
-        << s.n_signorini << " Signorini nodes with gap g = " << s.gap
-        << "; joints: " << s.n_horizontal_joint << " horizontal + "
-        << s.n_vertical_joint << " vertical node pairs\n";
+        << "  supports: " << quantity(s.n_dirichlet, "Dirichlet DOF") << ", "
+        << quantity(s.n_signorini, "Signorini node")
+        << " with gap g = " << s.gap << "; joints: " << s.n_horizontal_joint
+        << " horizontal + "
+        << quantity(s.n_vertical_joint, "vertical node pair") << "\n";
     print_solver_summary(out, lcp_problem, report);
     out << std::scientific << std::setprecision(6) << "  max displacement "
         << max_displacement << ", " << n_closed_contacts << " of "
-        << s.n_constraints << " contacts closed\n";
+        << quantity(s.n_constraints, "contact") << " closed\n";
     if (n_degenerate_contacts > 0)
-      out << "  " << n_degenerate_contacts
-          << " closed contacts carry no force (degenerate): where such "
+      out << "  "
+          << quantity(n_degenerate_contacts, "closed contact")
+          << (n_degenerate_contacts == 1 ? " carries" : " carry")
+          << " no force (degenerate): where such "
              "contacts alone hold a block, other displacements with the same "
              "energy and contact forces solve the problem too\n";
     out.flags(flags);
@@ -339,6 +346,21 @@ namespace unilateral::masonry
       .set("max_displacement", max_displacement)
       .set("n_closed_contacts", n_closed_contacts)
       .set("n_degenerate_contacts", n_degenerate_contacts);
+  }
+
+  std::string
+  MasonryScene::failure_description(const lcp::Report &report) const
+  {
+    if (report.status == lcp::Status::infeasible)
+      return "the wall has no equilibrium: its supports and joints cannot "
+             "carry the loads (" +
+             report.message + ")";
+    if (report.status == lcp::Status::singular)
+      return "the solver found no configuration in which every block is "
+             "held by a support or a closed joint: the wall has no "
+             "equilibrium, or a block can move freely (" +
+             report.message + ")";
+    return Scene::failure_description(report);
   }
 
   bool

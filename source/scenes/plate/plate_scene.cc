@@ -146,6 +146,8 @@ namespace unilateral::plate
                             parameters.load.name,
                           lcp_problem.A,
                           lcp_problem.b);
+    // The bending stiffness with the clamped DOFs eliminated.
+    lcp_problem.known_semidefinite = true;
   }
 
   void

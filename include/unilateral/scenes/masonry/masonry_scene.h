@@ -86,6 +86,10 @@ namespace unilateral::masonry
     std::string
     size_parameters() const override;
 
+    /// In the wall's terms: no equilibrium, or a block that nothing holds.
+    std::string
+    failure_description(const lcp::Report &report) const override;
+
     /// m 2^r >= 100: smaller walls gain less from huge pages than the
     /// restart costs (measured: README.md, "How the solve works").
     bool

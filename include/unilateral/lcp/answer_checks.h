@@ -1,0 +1,76 @@
+#pragma once
+
+#include <unilateral/lcp/problem.h>
+#include <unilateral/lcp/report.h>
+
+namespace unilateral::lcp
+{
+  /**
+   * The final judgement of every answer solve_lcp gives, always from u alone
+   * against the problem: lambda = A u - b, the active set, the relative KKT
+   * residuals and the energy, then the checks below in turn. A method's
+   * "converged" stands only if all of them pass; the first that fails makes
+   * the report 'inaccurate' with a message that says what failed and why.
+   * No wrong answer leaves the solver layer as converged.
+   */
+  void
+  assess_answer(const Problem &problem,
+                double         kkt_tolerance,
+                Solution      &solution,
+                Report        &report);
+
+  /**
+   * @name The checks of assess_answer
+   * Each leaves a report that is not 'converged' as it is.
+   */
+  /// @{
+
+  /// u, lambda, the energy and the residuals are finite numbers: a NaN or an
+  /// infinity in them means the data are beyond what double arithmetic
+  /// holds (a stiffness of 1e-300 with a load of 1); the message gives
+  /// their sizes.
+  void
+  check_finite(const Problem  &problem,
+               const Solution &solution,
+               Report         &report);
+
+  /// The relative KKT residuals are at most @p kkt_tolerance (the method's
+  /// own test can pass where they are not: a tolerance of its paper, an
+  /// answer of a regularised problem).
+  void
+  check_kkt(double kkt_tolerance, Report &report);
+
+  /**
+   * The work identity: at every solution u^T A u = b^T u + lambda_S^T l_S
+   * (lambda = A u - b vanishes off S, and complementarity puts u at l where
+   * lambda is not zero), and u^T A u >= 0. So W = b^T u + lambda_S^T l_S
+   * cannot be negative; an answer with W below -1e-6 (|b|^T |u| +
+   * |lambda_S|^T |l_S|), less the rounding error of lambda_S^T l_S, is not
+   * a solution. The relative KKT residuals are
+   * blind to a body that drifted far away as a rigid motion (A u stays
+   * small where |A| |u| is huge), and W is not: such an answer has W close
+   * to -|b|^T |u|.
+   */
+  void
+  check_work(const Problem &problem, const Solution &solution, Report &report);
+
+  /**
+   * The forces of the answer balance the loads, measured against the loads:
+   * with F = max(|b|_inf, |lambda_S|_inf), the residual of stationarity
+   * and of dual feasibility must be at most @p kkt_tolerance F; and double
+   * precision must resolve the forces that finely: the rounding error of
+   * A u, epsilon |A| |u|_inf, must be at most @p kkt_tolerance F too (it
+   * bounds the accuracy of the contact forces and of the energy). Both catch what the
+   * relative KKT residuals (measured against |A| |u|) miss where the
+   * displacements are mostly rigid motions far larger than the elastic ones:
+   * blocks that settle by a gap a billion times their elastic deformation,
+   * or that hang in the air held by round-off. Without loads (b = 0) there
+   * is nothing to balance and the check passes.
+   */
+  void
+  check_balance(const Problem  &problem,
+                const Solution &solution,
+                double          kkt_tolerance,
+                Report         &report);
+  /// @}
+} // namespace unilateral::lcp

@@ -1,0 +1,216 @@
+#include <unilateral/lcp/answer_checks.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace unilateral::lcp
+{
+  namespace
+  {
+    /**
+     * The forces of an answer and how finely double precision resolves
+     * them: F = max(|b|_inf, |lambda_S|_inf) (0 without loads), and the
+     * rounding error of A u, epsilon |A| |u|_inf, relative to F.
+     */
+    struct ForceScale
+    {
+      double forces     = 0;
+      double resolution = 0;
+      /// |A| |u|_inf / F: how far the displacements exceed the elastic ones
+      /// the forces cause.
+      double rigid_ratio = 0;
+    };
+
+    ForceScale
+    force_scale(const Problem &problem, const Vector &u, const Vector &lambda)
+    {
+      ForceScale scale;
+      scale.forces = problem.b.lpNorm<Eigen::Infinity>();
+      if (!(scale.forces > 0))
+        return scale;
+      for (const Index i : problem.constrained)
+        scale.forces = std::max(scale.forces, std::abs(lambda[i]));
+      Vector abs_product = Vector::Zero(problem.size());
+      for (Index j = 0; j < problem.size(); ++j)
+        for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+          abs_product[it.row()] += std::abs(it.value() * u[j]);
+      scale.rigid_ratio = abs_product.lpNorm<Eigen::Infinity>() / scale.forces;
+      scale.resolution =
+        std::numeric_limits<double>::epsilon() * scale.rigid_ratio;
+      return scale;
+    }
+
+    // The report becomes 'inaccurate' with @p message in front.
+    void
+    downgrade(Report &report, const std::string &message)
+    {
+      report.status  = Status::inaccurate;
+      report.message = report.message.empty() ? message :
+                                                message + "; " + report.message;
+    }
+  } // namespace
+
+  void
+  assess_answer(const Problem &problem,
+                const double   kkt_tolerance,
+                Solution      &solution,
+                Report        &report)
+  {
+    {
+      PhaseTimer timer(report, "kkt check");
+      if (solution.u.size() != problem.size())
+        solution.u = Vector::Zero(problem.size());
+      solution.lambda = multiplier(problem, solution.u);
+      // An index is active if u sits exactly at its bound (active-set and
+      // pivoting methods put it there) or, for interior-point iterates that
+      // never reach a bound, if its slack is smaller than its multiplier in
+      // the same units (slack times the diagonal of A).
+      solution.active_set.clear();
+      for (Index k = 0; k < problem.n_constrained(); ++k)
+        {
+          const Index  i     = problem.constrained[k];
+          const double slack = solution.u[i] - problem.lower_bound[k];
+          const double scale =
+            problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : 1.0;
+          if (slack == 0 || slack * scale < solution.lambda[i])
+            solution.active_set.push_back(i);
+        }
+      report.n_active = static_cast<unsigned int>(solution.active_set.size());
+      report.kkt      = kkt_residuals(problem, solution.u);
+      report.energy   = energy(problem, solution.u);
+      ++report.counters.matrix_vector_products;
+    }
+    check_finite(problem, solution, report);
+    check_kkt(kkt_tolerance, report);
+    check_work(problem, solution, report);
+    check_balance(problem, solution, kkt_tolerance, report);
+  }
+
+  void
+  check_finite(const Problem  &problem,
+               const Solution &solution,
+               Report         &report)
+  {
+    if (!report.converged())
+      return;
+    const char *what = !solution.u.allFinite()           ? "u" :
+                       !solution.lambda.allFinite()      ? "the multipliers" :
+                       !std::isfinite(report.energy)     ? "the energy" :
+                       !std::isfinite(report.kkt.max())  ? "the residuals" :
+                                                           nullptr;
+    if (what == nullptr)
+      return;
+    // The sizes that met, for the user to see which is out of range.
+    double largest_u = 0;
+    for (const double value : solution.u)
+      if (std::isfinite(value))
+        largest_u = std::max(largest_u, std::abs(value));
+    std::ostringstream message;
+    message << std::setprecision(3)
+            << "the answer is not a finite number (NaN or infinity in "
+            << what << "): displacements up to " << largest_u
+            << " under loads up to " << problem.b.lpNorm<Eigen::Infinity>()
+            << " with a stiffness (mean diagonal of A) of "
+            << (problem.size() > 0 ? problem.A.diagonal().mean() : 0.0)
+            << " are beyond double precision; give the loads and the "
+               "stiffness in units closer to each other";
+    downgrade(report, message.str());
+  }
+
+  void
+  check_kkt(const double kkt_tolerance, Report &report)
+  {
+    if (!report.converged() || report.kkt.max() <= kkt_tolerance)
+      return;
+    std::ostringstream message;
+    message << std::setprecision(3)
+            << "the method's stopping test passed but the relative KKT "
+               "residual is "
+            << report.kkt.max() << " > 'Solver/KKT tolerance' = "
+            << kkt_tolerance;
+    report.status  = Status::inaccurate;
+    report.message = message.str();
+  }
+
+  void
+  check_work(const Problem &problem, const Solution &solution, Report &report)
+  {
+    if (!report.converged() || solution.u.size() != problem.size())
+      return;
+    const Vector lambda = problem.A * solution.u - problem.b;
+    double       work   = problem.b.dot(solution.u);
+    double       scale  = problem.b.cwiseAbs().dot(solution.u.cwiseAbs());
+    // Each lambda_i carries the rounding error of A u, epsilon (|A| |u|)_i,
+    // into lambda_i l_i: W cannot be known more finely than their sum
+    // (without loads lambda is nothing but that error).
+    double rounding = 0;
+    for (Index k = 0; k < problem.n_constrained(); ++k)
+      {
+        const Index  i       = problem.constrained[k];
+        const double product = lambda[i] * problem.lower_bound[k];
+        work += product;
+        scale += std::abs(product);
+        double abs_product = 0;
+        for (SparseMatrix::InnerIterator it(problem.A, i); it; ++it)
+          abs_product += std::abs(it.value() * solution.u[it.row()]);
+        rounding += abs_product * std::abs(problem.lower_bound[k]);
+      }
+    rounding *= 10 * std::numeric_limits<double>::epsilon();
+    if (work >= -1e-6 * scale - rounding)
+      return;
+    std::ostringstream message;
+    message << std::setprecision(3) << "the answer fails the work check: "
+            << "b^T u + lambda_S^T l_S = " << work
+            << " < 0, but it equals u^T A u >= 0 at every solution (a body "
+               "drifted away as a rigid motion?)";
+    downgrade(report, message.str());
+  }
+
+  void
+  check_balance(const Problem  &problem,
+                const Solution &solution,
+                const double    kkt_tolerance,
+                Report         &report)
+  {
+    if (!report.converged() || solution.u.size() != problem.size())
+      return;
+    const Vector     lambda = problem.A * solution.u - problem.b;
+    const ForceScale scale  = force_scale(problem, solution.u, lambda);
+    if (!(scale.forces > 0))
+      return; // no loads: nothing to balance
+    // The residuals of stationarity and of dual feasibility.
+    const std::vector<char> in_S     = problem.constrained_mask();
+    double                  residual = 0;
+    for (Index i = 0; i < problem.size(); ++i)
+      residual =
+        std::max(residual, in_S[i] ? -lambda[i] : std::abs(lambda[i]));
+    const double forces     = scale.forces;
+    const double resolution = scale.resolution;
+    std::ostringstream message;
+    message << std::setprecision(3);
+    if (resolution > kkt_tolerance)
+      message << "the answer cannot be checked to 'Solver/KKT tolerance' = "
+              << kkt_tolerance
+              << " in double precision: its displacements are mostly rigid "
+                 "motions, "
+              << scale.rigid_ratio
+              << " times the elastic ones the forces cause, so its forces "
+                 "and energy are resolved only to "
+              << resolution
+              << " of their size; give the loads, the stiffness and the "
+                 "gaps in units closer to each other, or accept that "
+                 "accuracy with a larger 'KKT tolerance'";
+    else if (residual > kkt_tolerance * forces)
+      message << "the forces of the answer do not balance the loads: the "
+                 "residual is "
+              << residual / forces
+              << " of the largest load or contact force (> 'Solver/KKT "
+                 "tolerance'), although the relative KKT residuals pass (a "
+                 "body held by round-off?)";
+    else
+      return;
+    downgrade(report, message.str());
+  }
+} // namespace unilateral::lcp

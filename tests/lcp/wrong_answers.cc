@@ -1,0 +1,142 @@
+// No wrong answer leaves the solver layer as converged (issue 21's faults,
+// at the LCP level, for every registered method and variant):
+//  1. nonzero bounds: an exact answer at an active positive bound passes the
+//     work check (its sign was wrong: u = 1 for A = 1, b = 0, u >= 1 was
+//     'inaccurate');
+//  2. a body that must settle by its gap under a load far smaller than the
+//     stiffness: the exact answer, or no 'converged' (the regularisation
+//     once held it up, and the relative KKT residuals passed);
+//  3. data beyond double precision: no NaN or infinity reported as
+//     converged;
+//  4. an indefinite A is refused before any answer (it was solved: pdas gave
+//     u = (1/3, 1/3), graves (0, 1)).
+#include "../lcp_test_tools.h"
+
+#include <unilateral/base/input_error.h>
+
+#include <limits>
+
+using namespace test;
+
+namespace
+{
+  // Every registered method on @p problem: the verdict of each, one line
+  // per method that fails it, and one summary line.
+  template <typename Verdict>
+  void
+  every_method(const std::string &what,
+               const Problem     &problem,
+               const Verdict     &verdict)
+  {
+    unsigned int runs = 0, failures = 0;
+    for (const Method &method :
+         all_methods(problem.n_constrained() < problem.size()))
+      {
+        Vector       u;
+        const Report report = solve_with(problem, method, u);
+        ++runs;
+        if (!verdict(report, u))
+          {
+            ++failures;
+            std::cout << "  " << method.label() << ": "
+                      << to_string(report.status) << ", " << report.message
+                      << "\n";
+          }
+      }
+    std::cout << what << ": " << yes_no(failures == 0) << " (" << runs
+              << " methods)\n";
+  }
+} // namespace
+
+int
+main()
+{
+  // 1. A = 1, b = 0, u >= 1: u = 1, lambda = 1 (pushed up by its bound).
+  {
+    DenseMatrix A(1, 1);
+    A << 1;
+    const Problem problem = make_problem(A, Vector::Zero(1), {0}, {1.0});
+    every_method("bound 1 above the free position: converged, u = 1",
+                 problem,
+                 [](const Report &report, const Vector &u) {
+                   return report.converged() && std::abs(u[0] - 1) < 1e-12;
+                 });
+  }
+  // The same with one constrained and one free unknown coupled, bounds 0.5
+  // and the free one following: u = (0.5, 0.25).
+  {
+    DenseMatrix A(2, 2);
+    A << 2, -1, -1, 2;
+    const Problem problem = make_problem(A, Vector::Zero(2), {0}, {0.5});
+    every_method("coupled, bound 0.5 above: converged, u = (0.5, 0.25)",
+                 problem,
+                 [](const Report &report, const Vector &u) {
+                   return report.converged() &&
+                          std::abs(u[0] - 0.5) < 1e-12 &&
+                          std::abs(u[1] - 0.25) < 1e-12;
+                 });
+  }
+
+  // 2. A block of two nodes joined by a spring of stiffness 1e4, its base
+  // u_0 >= -1 (a support one unit below), a load -1e-12 on its top: it
+  // settles onto the support, u = (-1, -1 - 1e-16).
+  {
+    DenseMatrix A(2, 2);
+    A << 1e4, -1e4, -1e4, 1e4;
+    Vector b(2);
+    b << 0, -1e-12;
+    Problem problem     = make_problem(A, b, {0}, {-1.0});
+    problem.floating_bodies = true;
+    every_method("a block settling by a gap 1e16 times its deformation: "
+                 "converged only onto its support",
+                 problem,
+                 [](const Report &report, const Vector &u) {
+                   return !report.converged() ||
+                          (std::abs(u[0] + 1) < 1e-12 &&
+                           std::abs(u[1] + 1) < 1e-12);
+                 });
+  }
+
+  // 3. A = 1e-300, b = 1e300: u = 1e600 is beyond double precision.
+  {
+    DenseMatrix A(1, 1);
+    A << 1e-300;
+    Vector b(1);
+    b << 1e300;
+    const Problem problem = make_problem(A, b, {0}, {0.0});
+    every_method("u = 1e600 (beyond double): never converged with a NaN or "
+                 "infinity",
+                 problem,
+                 [](const Report &report, const Vector &u) {
+                   return !report.converged() ||
+                          (u.allFinite() && std::isfinite(report.energy));
+                 });
+  }
+
+  // 4. An indefinite A (eigenvalues 3 and -1).
+  {
+    DenseMatrix A(2, 2);
+    A << 1, 2, 2, 1;
+    const Problem problem = make_problem(A, Vector::Ones(2), {0, 1}, {0, 0});
+    unsigned int  refused = 0, runs = 0;
+    std::string   message;
+    for (const Method &method : all_methods(false))
+      {
+        Vector u;
+        ++runs;
+        try
+          {
+            solve_with(problem, method, u);
+            std::cout << "  " << method.label() << ": answered\n";
+          }
+        catch (const unilateral::InputError &error)
+          {
+            ++refused;
+            message = error.what();
+          }
+      }
+    std::cout << "indefinite A refused by every method: "
+              << yes_no(refused == runs) << " (" << runs << " methods)\n"
+              << "  " << message << "\n";
+  }
+}

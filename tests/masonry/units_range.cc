@@ -1,0 +1,101 @@
+// Issue 21, fault 2: a change of units must not change the answer, and no
+// Young's modulus or density in the double range may give a wrong answer
+// reported as converged. Stack bond, m = 4, g = H/2 (the paper's E = 4e3,
+// density 1: energy -6.253095e-02, the left half settles by g = 0.125).
+//  - E and the density times k together (a change of the force unit):
+//    the same displacement (1e-10) and the energy times k, for k from
+//    1e-300 to 1e300;
+//  - E alone very large, or the density alone very small: the blocks
+//    settle by g as rigid bodies and deform by almost nothing, so the
+//    answer is the drop g with energy -0.0625 times the density, or a run
+//    that says it cannot resolve it (before: E = 1e300 and density
+//    1e-200 were 'converged' with the blocks hanging in the air, E = 1e-300
+//    'converged' with energy NaN);
+//  - E alone very small: displacements beyond double precision, refused.
+#include "masonry_test_tools.h"
+
+#include <cmath>
+
+using namespace masonry_test;
+
+namespace
+{
+  Run
+  wall(const double youngs_modulus, const double density)
+  {
+    std::ostringstream prm;
+    prm << std::setprecision(17)
+        << "subsection Masonry\n  set Blocks per side = 4\n"
+        << "  subsection Materials\n    set Young's modulus = "
+        << youngs_modulus << "\n    set Density = " << density
+        << "\n  end\nend\n";
+    return run(parse(prm.str()), "units");
+  }
+
+  double
+  largest(const Run &run)
+  {
+    double result = 0;
+    for (const auto &node : run.scene->nodal_displacements())
+      result = std::max({result,
+                         std::abs(node.displacement[0]),
+                         std::abs(node.displacement[1])});
+    return result;
+  }
+
+  double
+  relative(const double a, const double b)
+  {
+    return std::abs(a - b) / std::abs(b);
+  }
+} // namespace
+
+int
+main()
+{
+  const Run    base     = wall(4e3, 1);
+  const double base_max = largest(base);
+  std::cout << "E = 4e3, density 1: " << lcp::to_string(base.report.status)
+            << ", energy " << std::scientific << std::setprecision(6)
+            << base.report.energy << ", max displacement " << base_max
+            << "\n";
+
+  std::cout << std::setprecision(0);
+  for (const double k : {1e-300, 1e-100, 1e-10, 1e10, 1e100, 1e300})
+    {
+      const Run result = wall(4e3 * k, k);
+      std::cout << "E = 4e3 k, density k, k = " << k << ": converged, "
+                << "the same displacement and the energy times k: "
+                << yes_no(result.report.converged() &&
+                          relative(largest(result), base_max) < 1e-10 &&
+                          relative(result.report.energy,
+                                   k * base.report.energy) < 1e-10)
+                << "\n";
+    }
+
+  // The drop g = 0.125 of the left half: energy -0.0625 density.
+  for (const auto &[E, density] : std::vector<std::pair<double, double>>{
+         {1e20, 1}, {1e50, 1}, {1e200, 1}, {1e300, 1}, {4e3, 1e-200}})
+    {
+      const Run  result = wall(E, density);
+      const bool right =
+        std::abs(largest(result) - 0.125) < 1e-10 &&
+        relative(result.report.energy, -0.0625 * density) < 1e-8;
+      std::cout << "E = " << E << ", density " << density << ": "
+                << lcp::to_string(result.report.status)
+                << ", converged only with the drop g: "
+                << yes_no(!result.report.converged() || right) << "\n";
+    }
+
+  for (const double E : {1e-300, 1e-200})
+    {
+      const Run result = wall(E, 1);
+      std::cout << "E = " << E << ", density 1: "
+                << lcp::to_string(result.report.status)
+                << ", converged only with finite figures: "
+                << yes_no(!result.report.converged() ||
+                          (std::isfinite(result.report.energy) &&
+                           std::isfinite(largest(result))))
+                << "\n";
+    }
+}
