@@ -17,10 +17,7 @@
 //    the dense Schur complement, where each sweep costs n_c^2;
 //  - methods that move one index per iteration, on the Schur complement of
 //    the running bond at m = 20: 90 s and 2 min (graves then stops on
-//    cycling through round-off);
-//  - methods with a preferred regularisation (1e-2) on the Schur complement
-//    of the stack bond: the projection from there ends on an answer whose
-//    blocks drifted away, reported 'inaccurate' by the work check.
+//    cycling through round-off).
 // Stack bond has degenerate contacts (vertical joints at the top, closed
 // with zero force; their number is printed): every method must still end
 // exact, within its default iteration limit (the projection step once
@@ -57,11 +54,6 @@ namespace
     if (info.stationary && method.schur_complement)
       return "a stationary iteration on the dense Schur complement: each of "
              "its many sweeps costs n_c^2";
-    if (info.preferred_regularisation > 0 && method.schur_complement &&
-        geometry == "stack bond")
-      return "regularised by its preferred eps on the singular Schur "
-             "complement, the projection ends on a drifting answer (known, "
-             "reported inaccurate by the work check)";
     if (m < 20)
       return "";
     if (info.stationary && geometry != "stack bond")
