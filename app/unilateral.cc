@@ -1,12 +1,12 @@
 // The unilateral executable: everything lives in the core library.
 #include <unilateral/application.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <string>
-
-#include <unistd.h>
 
 namespace
 {

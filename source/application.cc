@@ -179,14 +179,14 @@ namespace unilateral
     remove_earlier_outputs(const std::filesystem::path &directory,
                            const std::string           &parameter_file)
     {
-      const std::set<std::string> names = {"summary.json",
-                                           "parameters.prm",
-                                           "u.txt",
-                                           "lambda.txt",
-                                           "active_set.txt",
-                                           "lcp_A.mtx",
-                                           "lcp_b.txt",
-                                           "lcp_constraints.txt"};
+      const std::set<std::string> names      = {"summary.json",
+                                                "parameters.prm",
+                                                "u.txt",
+                                                "lambda.txt",
+                                                "active_set.txt",
+                                                "lcp_A.mtx",
+                                                "lcp_b.txt",
+                                                "lcp_constraints.txt"};
       const std::set<std::string> extensions = {".vtu", ".pvtu", ".pvd"};
       for (const auto &entry : std::filesystem::directory_iterator(directory))
         {
@@ -280,11 +280,11 @@ namespace unilateral
                       "'.' or '..' (it names the run's subdirectory of "
                       "'Output/Directory'); to write elsewhere, set "
                       "'Output/Directory'");
-      context.write_vtu     = prm.get_bool("Write VTU");
-      context.export_lcp    = prm.get_bool("Export LCP");
+      context.write_vtu      = prm.get_bool("Write VTU");
+      context.export_lcp     = prm.get_bool("Export LCP");
       context.write_solution = prm.get_bool("Write solution");
-      context.print_timings = prm.get_bool("Print timings");
-      const bool progress   = prm.get_bool("Progress");
+      context.print_timings  = prm.get_bool("Print timings");
+      const bool progress    = prm.get_bool("Progress");
       prm.leave_subsection();
       context.solver.parse_parameters(prm);
 
@@ -293,26 +293,22 @@ namespace unilateral
         before_large_run();
 
       context.output_directory =
-        std::filesystem::path(directory.empty() ?
-                                "output" :
-                                resolve_relative_to(parameter_file,
-                                                    directory)) /
+        std::filesystem::path(
+          directory.empty() ? "output" :
+                              resolve_relative_to(parameter_file, directory)) /
         context.run_name;
       std::error_code error;
       std::filesystem::create_directories(context.output_directory, error);
       if (error)
-        throw InputError("parameter 'Output/Directory' = " + directory +
-                         ": cannot create '" +
-                         context.output_directory.string() +
-                         "': " + error.message());
+        throw InputError(
+          "parameter 'Output/Directory' = " + directory + ": cannot create '" +
+          context.output_directory.string() + "': " + error.message());
       remove_earlier_outputs(context.output_directory, parameter_file);
       // A parameters.prm left now is the file being read (a rerun from the
       // copy), which is not copied onto itself.
-      if (!std::filesystem::exists(context.output_directory /
-                                   "parameters.prm"))
+      if (!std::filesystem::exists(context.output_directory / "parameters.prm"))
         std::filesystem::copy_file(parameter_file,
-                                   context.output_directory /
-                                     "parameters.prm",
+                                   context.output_directory / "parameters.prm",
                                    error);
       if (error)
         throw InputError("cannot copy the parameter file into '" +
@@ -387,9 +383,8 @@ namespace unilateral
             std::string before = first;
             for (int k = 2; k < most; ++k)
               before += std::string(" ") + argv[k];
-            throw InputError("unexpected argument '" +
-                             std::string(argv[most]) + "' after " + before +
-                             "; see unilateral --help");
+            throw InputError("unexpected argument '" + std::string(argv[most]) +
+                             "' after " + before + "; see unilateral --help");
           }
         if (argc < 2 || help)
           {

@@ -48,13 +48,10 @@ namespace application_test
       argv.push_back(argument.data());
     std::ostringstream out, err;
     Result             result;
-    result.code = unilateral::run_application(static_cast<int>(argv.size()),
-                                              argv.data(),
-                                              out,
-                                              err,
-                                              before_large_run);
-    result.out  = out.str();
-    result.err  = err.str();
+    result.code = unilateral::run_application(
+      static_cast<int>(argv.size()), argv.data(), out, err, before_large_run);
+    result.out = out.str();
+    result.err = err.str();
     return result;
   }
 

@@ -37,9 +37,9 @@ namespace test
   }
 
   inline Problem
-  make_problem(const DenseMatrix        &A,
-               const Vector             &b,
-               const std::vector<Index> &S,
+  make_problem(const DenseMatrix         &A,
+               const Vector              &b,
+               const std::vector<Index>  &S,
                const std::vector<double> &lower)
   {
     Problem problem;
@@ -52,11 +52,11 @@ namespace test
   }
 
   inline Report
-  solve_with(const Problem &problem,
-             const Method  &method,
-             Vector        &u,
-             double         regularisation = -1,
-             SolverParameters parameters    = SolverParameters())
+  solve_with(const Problem   &problem,
+             const Method    &method,
+             Vector          &u,
+             double           regularisation = -1,
+             SolverParameters parameters     = SolverParameters())
   {
     method.apply(parameters);
     parameters.regularisation = regularisation;
@@ -105,14 +105,14 @@ namespace test
    * u). Returns the number of feasible bases found.
    */
   inline int
-  enumerate(const DenseMatrix        &A,
-            const Vector             &b,
-            const std::vector<Index> &S,
+  enumerate(const DenseMatrix         &A,
+            const Vector              &b,
+            const std::vector<Index>  &S,
             const std::vector<double> &lower,
-            Vector                   &u_exact)
+            Vector                    &u_exact)
   {
-    const Index n     = A.rows();
-    const Index n_c   = static_cast<Index>(S.size());
+    const Index n          = A.rows();
+    const Index n_c        = static_cast<Index>(S.size());
     Vector      full_lower = Vector::Zero(n);
     for (Index k = 0; k < n_c; ++k)
       full_lower[S[k]] = lower[k];
@@ -122,8 +122,8 @@ namespace test
         std::vector<char> fixed(n, 0);
         for (Index k = 0; k < n_c; ++k)
           fixed[S[k]] = (mask >> k) & 1;
-        const Vector u      = equality_solution(A, b, fixed, full_lower);
-        const Vector lambda = A * u - b;
+        const Vector u        = equality_solution(A, b, fixed, full_lower);
+        const Vector lambda   = A * u - b;
         bool         feasible = true;
         for (Index k = 0; k < n_c; ++k)
           {

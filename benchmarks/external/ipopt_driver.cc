@@ -32,15 +32,15 @@ namespace
 
   struct Data
   {
-    const Problem          *problem;
-    std::vector<Index>      rows, columns; // lower triangle of A
-    std::vector<double>     values;
+    const Problem      *problem;
+    std::vector<Index>  rows, columns; // lower triangle of A
+    std::vector<double> values;
   };
 
   Bool
   eval_f(Index n, Number *x, Bool, Number *f, UserDataPtr data_pointer)
   {
-    const Data &data = *static_cast<Data *>(data_pointer);
+    const Data                    &data = *static_cast<Data *>(data_pointer);
     const Eigen::Map<const Vector> u(x, n);
     *f = 0.5 * u.dot(data.problem->A * u) - data.problem->b.dot(u);
     return TRUE;
@@ -49,7 +49,7 @@ namespace
   Bool
   eval_grad_f(Index n, Number *x, Bool, Number *g, UserDataPtr data_pointer)
   {
-    const Data &data = *static_cast<Data *>(data_pointer);
+    const Data                    &data = *static_cast<Data *>(data_pointer);
     const Eigen::Map<const Vector> u(x, n);
     Eigen::Map<Vector>(g, n) = data.problem->A * u - data.problem->b;
     return TRUE;
@@ -62,7 +62,14 @@ namespace
   }
 
   Bool
-  eval_jac_g(Index, Number *, Bool, Index, Index, Index *, Index *, Number *,
+  eval_jac_g(Index,
+             Number *,
+             Bool,
+             Index,
+             Index,
+             Index *,
+             Index *,
+             Number *,
              UserDataPtr)
   {
     return TRUE;
@@ -72,7 +79,7 @@ namespace
   eval_h(Index,
          Number *,
          Bool,
-         Number      obj_factor,
+         Number obj_factor,
          Index,
          Number *,
          Bool,
@@ -134,8 +141,18 @@ namespace
   int iterations_seen = 0;
 
   Bool
-  count_iterations(Index, Index iter_count, Number, Number, Number, Number,
-                   Number, Number, Number, Number, Index, UserDataPtr)
+  count_iterations(Index,
+                   Index iter_count,
+                   Number,
+                   Number,
+                   Number,
+                   Number,
+                   Number,
+                   Number,
+                   Number,
+                   Number,
+                   Index,
+                   UserDataPtr)
   {
     iterations_seen = iter_count;
     return TRUE;
@@ -144,7 +161,8 @@ namespace
   void
   set(IpoptProblem ipopt, const char *key, const char *value)
   {
-    if (!AddIpoptStrOption(ipopt, const_cast<char *>(key),
+    if (!AddIpoptStrOption(ipopt,
+                           const_cast<char *>(key),
                            const_cast<char *>(value)))
       throw std::runtime_error(std::string("Ipopt rejected option ") + key +
                                " = " + value);
@@ -193,17 +211,28 @@ namespace
             data.columns.push_back(j);
             data.values.push_back(it.value());
           }
-    const double infinity = 1e20;
+    const double        infinity = 1e20;
     std::vector<double> lower(n, -infinity), upper(n, infinity), x(n, 0.0);
     for (Index k = 0; k < problem.n_constrained(); ++k)
       {
         lower[problem.constrained[k]] = problem.lower_bound[k];
-        x[problem.constrained[k]] = std::max(0.0, problem.lower_bound[k]);
+        x[problem.constrained[k]]     = std::max(0.0, problem.lower_bound[k]);
       }
-    IpoptProblem ipopt = CreateIpoptProblem(
-      n, lower.data(), upper.data(), 0, nullptr, nullptr, 0,
-      static_cast<Index>(data.values.size()), 0, eval_f, eval_g, eval_grad_f,
-      eval_jac_g, eval_h);
+    IpoptProblem ipopt =
+      CreateIpoptProblem(n,
+                         lower.data(),
+                         upper.data(),
+                         0,
+                         nullptr,
+                         nullptr,
+                         0,
+                         static_cast<Index>(data.values.size()),
+                         0,
+                         eval_f,
+                         eval_g,
+                         eval_grad_f,
+                         eval_jac_g,
+                         eval_h);
     if (ipopt == nullptr)
       throw std::runtime_error("CreateIpoptProblem failed");
     const double scale = force_scale(problem);
@@ -229,8 +258,8 @@ namespace
 
     const Stopwatch solve_clock;
     double          objective = 0;
-    const int       status = IpoptSolve(ipopt, x.data(), nullptr, &objective,
-                                  nullptr, nullptr, nullptr, &data);
+    const int       status    = IpoptSolve(
+      ipopt, x.data(), nullptr, &objective, nullptr, nullptr, nullptr, &data);
     outcome.solve_time = solve_clock.seconds();
     FreeIpoptProblem(ipopt);
 

@@ -75,12 +75,12 @@ namespace
 
   struct Data
   {
-    Mat A = nullptr;
-    Vec b = nullptr;
-    Vec u = nullptr;
+    Mat A     = nullptr;
+    Vec b     = nullptr;
+    Vec u     = nullptr;
     Vec lower = nullptr;
     Vec upper = nullptr;
-    Vec work = nullptr;
+    Vec work  = nullptr;
 
     ~Data()
     {
@@ -98,21 +98,26 @@ namespace
   void
   build(const Problem &problem, Data &data, const double box = 0)
   {
-    const PetscInt n = problem.size();
+    const PetscInt        n = problem.size();
     std::vector<PetscInt> row_lengths(n);
     for (PetscInt i = 0; i < n; ++i)
-      row_lengths[i] = problem.A.outerIndexPtr()[i + 1] -
-                       problem.A.outerIndexPtr()[i];
-    CHECK(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, row_lengths.data(),
-                          &data.A));
+      row_lengths[i] =
+        problem.A.outerIndexPtr()[i + 1] - problem.A.outerIndexPtr()[i];
+    CHECK(
+      MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, row_lengths.data(), &data.A));
     for (PetscInt i = 0; i < n; ++i)
       {
-        const PetscInt begin = problem.A.outerIndexPtr()[i];
+        const PetscInt        begin = problem.A.outerIndexPtr()[i];
         std::vector<PetscInt> columns(problem.A.innerIndexPtr() + begin,
                                       problem.A.innerIndexPtr() + begin +
                                         row_lengths[i]);
-        CHECK(MatSetValues(data.A, 1, &i, row_lengths[i], columns.data(),
-                           problem.A.valuePtr() + begin, INSERT_VALUES));
+        CHECK(MatSetValues(data.A,
+                           1,
+                           &i,
+                           row_lengths[i],
+                           columns.data(),
+                           problem.A.valuePtr() + begin,
+                           INSERT_VALUES));
       }
     CHECK(MatAssemblyBegin(data.A, MAT_FINAL_ASSEMBLY));
     CHECK(MatAssemblyEnd(data.A, MAT_FINAL_ASSEMBLY));
@@ -171,7 +176,8 @@ namespace
     const std::string linear = options.string("linear", "direct");
     const std::string factor = options.string("factor", default_factor);
     auto set = [&](const std::string &key, const std::string &value) {
-      CHECK(PetscOptionsSetValue(nullptr, ("-" + prefix + key).c_str(),
+      CHECK(PetscOptionsSetValue(nullptr,
+                                 ("-" + prefix + key).c_str(),
                                  value.c_str()));
     };
     if (linear == "direct")
@@ -215,7 +221,7 @@ namespace
   objective_and_gradient(Tao, Vec u, PetscReal *f, Vec g, void *context)
   {
     const Data &data = *static_cast<const Data *>(context);
-    PetscScalar  ub, uAu;
+    PetscScalar ub, uAu;
     // g = A u - b, f = 1/2 u'Au - b'u = 1/2 u'(g - b)
     PetscCall(MatMult(data.A, u, g));
     PetscCall(VecDot(u, g, &uAu));
@@ -246,8 +252,7 @@ namespace
     const PetscScalar *values;
     PetscCall(TaoGetSolution(tao, &u));
     PetscCall(VecGetArrayRead(u, &values));
-    const Vector copy =
-      Eigen::Map<const Vector>(values, stop.problem->size());
+    const Vector copy = Eigen::Map<const Vector>(values, stop.problem->size());
     PetscCall(VecRestoreArrayRead(u, &values));
     if (unilateral::lcp::kkt_residuals(*stop.problem, copy).max() <=
         stop.target)
@@ -305,23 +310,26 @@ namespace
       options.integer("max_iterations", bqpip ? 200 : 10000);
     set_linear_solver("", method, options, bqpip ? "mumps" : "cholmod");
     if (method == "tao_gpcg")
-      CHECK(PetscOptionsSetValue(nullptr, "-tao_subset_type",
+      CHECK(PetscOptionsSetValue(nullptr,
+                                 "-tao_subset_type",
                                  options.string("subset", "subvec").c_str()));
     if (method == "tao_tron")
-      CHECK(PetscOptionsSetValue(nullptr, "-tao_subset_type",
+      CHECK(PetscOptionsSetValue(nullptr,
+                                 "-tao_subset_type",
                                  options.string("subset", "subvec").c_str()));
     const std::string extra = options.string("petsc", "");
     CHECK(PetscOptionsInsertString(nullptr, extra.c_str()));
 
     Tao tao;
     CHECK(TaoCreate(PETSC_COMM_SELF, &tao));
-    CHECK(TaoSetType(tao, method == "tao_bqpip" ? TAOBQPIP :
-                          method == "tao_gpcg"  ? TAOGPCG :
-                                                  TAOTRON));
+    CHECK(TaoSetType(tao,
+                     method == "tao_bqpip" ? TAOBQPIP :
+                     method == "tao_gpcg"  ? TAOGPCG :
+                                             TAOTRON));
     CHECK(TaoSetSolution(tao, data.u));
     CHECK(TaoSetVariableBounds(tao, data.lower, data.upper));
-    CHECK(TaoSetObjectiveAndGradient(tao, nullptr, objective_and_gradient,
-                                     &data));
+    CHECK(
+      TaoSetObjectiveAndGradient(tao, nullptr, objective_and_gradient, &data));
     CHECK(TaoSetHessian(tao, data.A, data.A, hessian, &data));
     CHECK(TaoSetTolerances(tao, tol * norm2(problem), 0.0, 0.0));
     CHECK(TaoSetMaximumIterations(tao, max_iterations));
@@ -337,9 +345,9 @@ namespace
     CHECK(TaoSetUp(tao));
     outcome.setup_time = setup.seconds();
 
-    const Stopwatch solve;
+    const Stopwatch      solve;
     const PetscErrorCode code = TaoSolve(tao);
-    outcome.solve_time = solve.seconds();
+    outcome.solve_time        = solve.seconds();
 
     if (code != 0)
       {
@@ -395,15 +403,20 @@ namespace
 
     SNES snes;
     CHECK(SNESCreate(PETSC_COMM_SELF, &snes));
-    CHECK(SNESSetType(snes, method == "snes_vinewtonrsls" ? SNESVINEWTONRSLS :
-                                                            SNESVINEWTONSSLS));
+    CHECK(SNESSetType(snes,
+                      method == "snes_vinewtonrsls" ? SNESVINEWTONRSLS :
+                                                      SNESVINEWTONSSLS));
     CHECK(SNESSetFunction(snes, data.work, residual, &data));
     CHECK(SNESSetJacobian(snes, data.A, data.A, jacobian, &data));
     CHECK(SNESVISetVariableBounds(snes, data.lower, data.upper));
     // atol on the norm of the VI residual; rtol and stol off so that only the
     // absolute test (tied to ||b||) stops the iteration.
-    CHECK(SNESSetTolerances(snes, tol * norm2(problem), 0.0, 0.0,
-                            max_iterations, 100 * max_iterations));
+    CHECK(SNESSetTolerances(snes,
+                            tol * norm2(problem),
+                            0.0,
+                            0.0,
+                            max_iterations,
+                            100 * max_iterations));
     CHECK(SNESSetFromOptions(snes));
     CHECK(SNESSetSolution(snes, data.u));
     CHECK(SNESSetUp(snes));
@@ -430,8 +443,8 @@ namespace
         outcome.iterations = iterations;
         outcome.converged  = reason > 0;
         outcome.status     = SNESConvergedReasons[reason];
-        outcome.message    = std::to_string(linear_iterations) +
-                          " linear iterations";
+        outcome.message =
+          std::to_string(linear_iterations) + " linear iterations";
       }
     KSP     ksp;
     KSPType ksp_type;

@@ -29,6 +29,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
+
 #include <LCP_Solvers.h>
 #include <LinearComplementarityProblem.h>
 #include <NonSmoothDrivers.h>
@@ -51,17 +52,17 @@ namespace
   /// The standard LCP (M, q) and how to get u back from z.
   struct Standard
   {
-    DenseMatrix M;
-    Vector      q;
-    std::string reduction;
+    DenseMatrix        M;
+    Vector             q;
+    std::string        reduction;
     std::vector<Index> S, E; ///< constrained and unconstrained indices
     SparseMatrix       A_ES; ///< for recovering u_E after the Schur form
   };
 
   SparseMatrix
-  block(const SparseMatrix         &A,
-        const std::vector<Index>   &rows,
-        const std::vector<Index>   &columns)
+  block(const SparseMatrix       &A,
+        const std::vector<Index> &rows,
+        const std::vector<Index> &columns)
   {
     std::vector<Index> row_position(A.rows(), -1);
     for (std::size_t k = 0; k < rows.size(); ++k)
@@ -70,7 +71,8 @@ namespace
     for (std::size_t k = 0; k < columns.size(); ++k)
       for (SparseMatrix::InnerIterator it(A, columns[k]); it; ++it)
         if (row_position[it.row()] >= 0)
-          entries.emplace_back(row_position[it.row()], static_cast<Index>(k),
+          entries.emplace_back(row_position[it.row()],
+                               static_cast<Index>(k),
                                it.value());
     SparseMatrix result(static_cast<Index>(rows.size()),
                         static_cast<Index>(columns.size()));
@@ -89,37 +91,37 @@ namespace
 
   /// Returns false (and says why) if A_EE is numerically singular.
   bool
-  build_schur(const Problem                        &problem,
-              Standard                             &standard,
-              Eigen::SimplicialLDLT<SparseMatrix>  &factor,
-              std::string                          &why)
+  build_schur(const Problem                       &problem,
+              Standard                            &standard,
+              Eigen::SimplicialLDLT<SparseMatrix> &factor,
+              std::string                         &why)
   {
-    const auto &S = standard.S;
-    const auto &E = standard.E;
-    const Vector l = problem.lower_bound;
-    DenseMatrix  M = DenseMatrix(block(problem.A, S, S));
+    const auto  &S   = standard.S;
+    const auto  &E   = standard.E;
+    const Vector l   = problem.lower_bound;
+    DenseMatrix  M   = DenseMatrix(block(problem.A, S, S));
     Vector       rhs = gather(problem.b, S);
     if (!E.empty())
       {
         const SparseMatrix A_EE = block(problem.A, E, E);
         standard.A_ES           = block(problem.A, E, S);
         factor.compute(A_EE);
-        const Vector D = factor.vectorD();
+        const Vector D       = factor.vectorD();
         const double largest = D.cwiseAbs().maxCoeff();
-        if (factor.info() != Eigen::Success ||
-            D.minCoeff() <= 1e-12 * largest)
+        if (factor.info() != Eigen::Success || D.minCoeff() <= 1e-12 * largest)
           {
             why = "A_EE (the unconstrained block) is singular: smallest LDL' "
-                  "pivot " + std::to_string(D.minCoeff()) + " vs largest " +
+                  "pivot " +
+                  std::to_string(D.minCoeff()) + " vs largest " +
                   std::to_string(largest);
             return false;
           }
         // M -= A_SE A_EE^-1 A_ES, in blocks of columns.
-        const Index n_c = static_cast<Index>(S.size());
+        const Index n_c   = static_cast<Index>(S.size());
         const Index width = 256;
         for (Index first = 0; first < n_c; first += width)
           {
-            const Index  count = std::min(width, n_c - first);
+            const Index       count = std::min(width, n_c - first);
             const DenseMatrix X =
               factor.solve(DenseMatrix(standard.A_ES.middleCols(first, count)));
             M.middleCols(first, count) -= standard.A_ES.transpose() * X;
@@ -128,8 +130,8 @@ namespace
         rhs -= standard.A_ES.transpose() * y;
         M = 0.5 * (M + M.transpose()); // exact symmetry for the pivoting
       }
-    standard.q = M * l - rhs;
-    standard.M = std::move(M);
+    standard.q         = M * l - rhs;
+    standard.M         = std::move(M);
     standard.reduction = E.empty() ? "none (all constrained)" : "schur";
     return true;
   }
@@ -137,10 +139,10 @@ namespace
   void
   build_split(const Problem &problem, Standard &standard)
   {
-    const auto &S = standard.S;
-    const auto &E = standard.E;
-    const Index n_c = static_cast<Index>(S.size());
-    const Index n_e = static_cast<Index>(E.size());
+    const auto        &S     = standard.S;
+    const auto        &E     = standard.E;
+    const Index        n_c   = static_cast<Index>(S.size());
+    const Index        n_e   = static_cast<Index>(E.size());
     std::vector<Index> order = S;
     order.insert(order.end(), E.begin(), E.end());
     const DenseMatrix A = DenseMatrix(block(problem.A, order, order));
@@ -149,10 +151,10 @@ namespace
     P.topLeftCorner(n_c, n_c).setIdentity();
     P.block(n_c, n_c, n_e, n_e).setIdentity();
     P.block(n_c, n_c + n_e, n_e, n_e) = -DenseMatrix::Identity(n_e, n_e);
-    Vector shift = Vector::Zero(n_c + n_e);
-    shift.head(n_c) = problem.lower_bound;
-    standard.M = P.transpose() * A * P;
-    standard.q = P.transpose() * (A * shift - gather(problem.b, order));
+    Vector shift                      = Vector::Zero(n_c + n_e);
+    shift.head(n_c)                   = problem.lower_bound;
+    standard.M                        = P.transpose() * A * P;
+    standard.q         = P.transpose() * (A * shift - gather(problem.b, order));
     standard.reduction = "split";
   }
 
@@ -172,13 +174,14 @@ namespace
       {"pgs", SICONOS_LCP_PGS}};
     const auto id = ids.find(method);
     if (id == ids.end())
-      throw unilateral::InputError("unknown method '" + method +
-                                   "'; use lemke, pivot, pivot_lumod, "
-                                   "newton_min, newton_fb, newton_minfb or pgs");
-    const double      tol            = options.number("tol", 1e-12);
-    const int         max_iterations = options.integer("max_iterations", 100000);
-    const int         max_dense      = options.integer("max_dense", 3000);
-    const std::string reduction      = options.string("reduction", "schur");
+      throw unilateral::InputError(
+        "unknown method '" + method +
+        "'; use lemke, pivot, pivot_lumod, "
+        "newton_min, newton_fb, newton_minfb or pgs");
+    const double tol            = options.number("tol", 1e-12);
+    const int    max_iterations = options.integer("max_iterations", 100000);
+    const int    max_dense      = options.integer("max_dense", 3000);
+    const std::string reduction = options.string("reduction", "schur");
     if (reduction != "schur" && reduction != "split")
       throw unilateral::InputError("option reduction=" + reduction +
                                    ": use schur or split");
@@ -188,8 +191,8 @@ namespace
     const auto      mask = problem.constrained_mask();
     for (Index i = 0; i < problem.size(); ++i)
       (mask[i] ? standard.S : standard.E).push_back(i);
-    const Index n_c = problem.n_constrained();
-    const Index n_e = problem.size() - n_c;
+    const Index n_c        = problem.n_constrained();
+    const Index n_e        = problem.size() - n_c;
     const Index split_size = n_c + 2 * n_e;
 
     Eigen::SimplicialLDLT<SparseMatrix> factor;
@@ -201,9 +204,9 @@ namespace
           {
             outcome.status    = "too large";
             outcome.converged = false;
-            outcome.message   = "dense M of size n_c = " + std::to_string(n_c) +
-                              " exceeds max_dense = " +
-                              std::to_string(max_dense);
+            outcome.message =
+              "dense M of size n_c = " + std::to_string(n_c) +
+              " exceeds max_dense = " + std::to_string(max_dense);
             return;
           }
         built = build_schur(problem, standard, factor, why);
@@ -212,8 +215,8 @@ namespace
       {
         if (split_size > max_dense)
           {
-            outcome.status    = reduction == "schur" ? "not applicable" :
-                                                       "too large";
+            outcome.status =
+              reduction == "schur" ? "not applicable" : "too large";
             outcome.converged = false;
             outcome.message =
               (why.empty() ? std::string() : why + "; ") + "the split form " +
@@ -226,34 +229,34 @@ namespace
           standard.reduction += " (fallback: " + why + ")";
       }
 
-    const int m = static_cast<int>(standard.q.size());
+    const int       m = static_cast<int>(standard.q.size());
     NumericsMatrix *M = NM_create(NM_DENSE, m, m);
-    std::copy(standard.M.data(), standard.M.data() + std::size_t(m) * m,
+    std::copy(standard.M.data(),
+              standard.M.data() + std::size_t(m) * m,
               M->matrix0);
-    std::vector<double> q(standard.q.data(), standard.q.data() + m);
-    std::vector<double> z(m, 0.0), w(m, 0.0);
+    std::vector<double>          q(standard.q.data(), standard.q.data() + m);
+    std::vector<double>          z(m, 0.0), w(m, 0.0);
     LinearComplementarityProblem lcp;
-    lcp.size = m;
-    lcp.M    = M;
-    lcp.q    = q.data();
+    lcp.size                      = m;
+    lcp.M                         = M;
+    lcp.q                         = q.data();
     SolverOptions *solver_options = solver_options_create(id->second);
     solver_options->iparam[SICONOS_IPARAM_MAX_ITER] = max_iterations;
     solver_options->dparam[SICONOS_DPARAM_TOL]      = tol;
-    outcome.setup_time = setup.seconds();
+    outcome.setup_time                              = setup.seconds();
 
     const Stopwatch solve_clock;
-    const int info = linearComplementarity_driver(&lcp, z.data(), w.data(),
-                                                  solver_options);
+    const int       info =
+      linearComplementarity_driver(&lcp, z.data(), w.data(), solver_options);
     outcome.solve_time = solve_clock.seconds();
 
     outcome.iterations = solver_options->iparam[SICONOS_IPARAM_ITER_DONE];
     outcome.converged  = info == 0;
-    outcome.status     = info == 0 ? "converged" :
-                                     "info " + std::to_string(info);
-    outcome.message = "reduction " + standard.reduction + ", M " +
-                      std::to_string(m) + "x" + std::to_string(m) +
-                      ", Siconos error " +
-                      std::to_string(solver_options->dparam[SICONOS_DPARAM_RESIDU]);
+    outcome.status = info == 0 ? "converged" : "info " + std::to_string(info);
+    outcome.message =
+      "reduction " + standard.reduction + ", M " + std::to_string(m) + "x" +
+      std::to_string(m) + ", Siconos error " +
+      std::to_string(solver_options->dparam[SICONOS_DPARAM_RESIDU]);
     solver_options_delete(solver_options);
     NM_free(M);
 

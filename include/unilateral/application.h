@@ -20,7 +20,7 @@ namespace unilateral
   int
   run_application(int                          argc,
                   char                       **argv,
-                  std::ostream                &out = std::cout,
-                  std::ostream                &err = std::cerr,
+                  std::ostream                &out              = std::cout,
+                  std::ostream                &err              = std::cerr,
                   const std::function<void()> &before_large_run = {});
 } // namespace unilateral

@@ -159,8 +159,7 @@ namespace unilateral
     out << "{";
     for (std::size_t i = 0; i < entries.size(); ++i)
       {
-        out << (i == 0 ? "\n" : ",\n") << pad << quoted(entries[i].key)
-            << ": ";
+        out << (i == 0 ? "\n" : ",\n") << pad << quoted(entries[i].key) << ": ";
         if (entries[i].child >= 0)
           children[entries[i].child].write(out, indent + 2);
         else

@@ -8,6 +8,8 @@ namespace unilateral
            const std::string       &plural)
   {
     return std::to_string(n) + " " +
-           (n == 1 ? singular : plural.empty() ? singular + "s" : plural);
+           (n == 1         ? singular :
+            plural.empty() ? singular + "s" :
+                             plural);
   }
 } // namespace unilateral

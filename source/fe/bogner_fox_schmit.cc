@@ -27,7 +27,7 @@ namespace unilateral::fe
 
       Hermite1d(const double x, const double x0, const double h)
       {
-        const double s = (x - x0) / h;
+        const double s  = (x - x0) / h;
         const double s2 = s * s, s3 = s2 * s;
 
         value[0][0]  = 1 - 3 * s2 + 2 * s3;
@@ -57,8 +57,8 @@ namespace unilateral::fe
       {
         const unsigned int v = i / BognerFoxSchmit::dofs_per_vertex;
         const unsigned int c = i % BognerFoxSchmit::dofs_per_vertex;
-        side_x = v % 2;
-        side_y = v / 2;
+        side_x               = v % 2;
+        side_y               = v / 2;
         kind_x = (c == BognerFoxSchmit::slope_x || c == BognerFoxSchmit::twist);
         kind_y = (c == BognerFoxSchmit::slope_y || c == BognerFoxSchmit::twist);
       }
@@ -80,11 +80,10 @@ namespace unilateral::fe
   BognerFoxSchmit::from_vertices(
     const std::array<dealii::Point<2>, 4> &vertices)
   {
-    const double h1 = vertices[1][0] - vertices[0][0];
-    const double h2 = vertices[2][1] - vertices[0][1];
-    const double tolerance =
-      1e-10 * std::max(std::abs(h1), std::abs(h2));
-    const bool rectangle =
+    const double h1        = vertices[1][0] - vertices[0][0];
+    const double h2        = vertices[2][1] - vertices[0][1];
+    const double tolerance = 1e-10 * std::max(std::abs(h1), std::abs(h2));
+    const bool   rectangle =
       h1 > 0 && h2 > 0 &&
       std::abs(vertices[1][1] - vertices[0][1]) <= tolerance &&
       std::abs(vertices[2][0] - vertices[0][0]) <= tolerance &&
@@ -95,8 +94,8 @@ namespace unilateral::fe
         std::ostringstream message;
         message << "the Bogner-Fox-Schmit element needs an axis-aligned "
                    "rectangle in deal.II vertex order; got vertices ("
-                << vertices[0] << "), (" << vertices[1] << "), ("
-                << vertices[2] << "), (" << vertices[3] << ")";
+                << vertices[0] << "), (" << vertices[1] << "), (" << vertices[2]
+                << "), (" << vertices[3] << ")";
         throw std::invalid_argument(message.str());
       }
     return BognerFoxSchmit(vertices[0], h1, h2);
@@ -213,12 +212,12 @@ namespace unilateral::fe
     Coefficients coefficients;
     for (unsigned int v = 0; v < 4; ++v)
       {
-        const dealii::Point<2>     p        = vertex(v);
-        const dealii::Tensor<1, 2> gradient = f.gradient(p);
+        const dealii::Point<2>     p             = vertex(v);
+        const dealii::Tensor<1, 2> gradient      = f.gradient(p);
         coefficients[local_index(v, deflection)] = f.value(p);
-        coefficients[local_index(v, slope_x)] = gradient[0];
-        coefficients[local_index(v, slope_y)] = gradient[1];
-        coefficients[local_index(v, twist)]   = f.hessian(p)[0][1];
+        coefficients[local_index(v, slope_x)]    = gradient[0];
+        coefficients[local_index(v, slope_y)]    = gradient[1];
+        coefficients[local_index(v, twist)]      = f.hessian(p)[0][1];
       }
     return coefficients;
   }

@@ -30,10 +30,10 @@ namespace unilateral::lcp
                      const bool               of_fixed,
                      const DenseMatrix       &Y)
     {
-      DenseMatrix result = DenseMatrix::Zero(A.rows(), Y.cols());
-      const auto *const column_start = A.outerIndexPtr();
-      const auto *const row          = A.innerIndexPtr();
-      const double *const value      = A.valuePtr();
+      DenseMatrix         result       = DenseMatrix::Zero(A.rows(), Y.cols());
+      const auto *const   column_start = A.outerIndexPtr();
+      const auto *const   row          = A.innerIndexPtr();
+      const double *const value        = A.valuePtr();
       for (Index column = 0; column < Y.cols(); ++column)
         {
           double *const       out = result.col(column).data();
@@ -58,8 +58,8 @@ namespace unilateral::lcp
   {
     // A_FF must hold every body: a numerically singular factor is refused.
     own->cholesky.minimum_rcond = 1e-14;
-    const Vector diagonal = A.diagonal();
-    double       mean     = diagonal.size() > 0 ? diagonal.mean() : 1.0;
+    const Vector diagonal       = A.diagonal();
+    double       mean           = diagonal.size() > 0 ? diagonal.mean() : 1.0;
     if (!(mean > 0))
       mean = 1.0;
     fixed_diagonal = diagonal;
@@ -93,8 +93,8 @@ namespace unilateral::lcp
   {
     if (!full_ordering.empty())
       return;
-    full_ordering        = SparseCholesky::amd_ordering(A, counters);
-    own->ordering_of_A   = full_ordering;
+    full_ordering      = SparseCholesky::amd_ordering(A, counters);
+    own->ordering_of_A = full_ordering;
   }
 
   std::shared_ptr<const ActiveSetFactor>
@@ -219,11 +219,11 @@ namespace unilateral::lcp
           n_entries += !fixed[it.row()];
     reduced = SparseMatrix(n_free, n_free);
     reduced.resizeNonZeros(n_entries);
-    auto *const column_start = reduced.outerIndexPtr();
-    auto *const row_index    = reduced.innerIndexPtr();
-    double *const value      = reduced.valuePtr();
-    Index         entry      = 0;
-    column_start[0]          = 0;
+    auto *const   column_start = reduced.outerIndexPtr();
+    auto *const   row_index    = reduced.innerIndexPtr();
+    double *const value        = reduced.valuePtr();
+    Index         entry        = 0;
+    column_start[0]            = 0;
     for (Index j = 0; j < n; ++j)
       if (!fixed[j])
         {
@@ -288,8 +288,8 @@ namespace unilateral::lcp
     const auto over_budget = [&]() {
       return own->cholesky.modification_flops() - flops_before > budget;
     };
-    std::vector<char> current = own->fixed;
-    bool              ok      = true;
+    std::vector<char>  current = own->fixed;
+    bool               ok      = true;
     std::vector<Index> column_rows;
     for (const Index k : newly_fixed)
       {
@@ -330,8 +330,8 @@ namespace unilateral::lcp
       }
     // The same test of singularity as a fresh factorisation (a freed index
     // may leave a body without support).
-    ok = ok && own->cholesky.reciprocal_condition() >
-                 own->cholesky.minimum_rcond;
+    ok =
+      ok && own->cholesky.reciprocal_condition() > own->cholesky.minimum_rcond;
     if (!ok)
       {
         own_valid = false;
@@ -369,7 +369,7 @@ namespace unilateral::lcp
     if (factorised)
       {
         // A fixed pseudo-random start (deterministic runs), zero on X.
-        DenseMatrix start(n, 1);
+        DenseMatrix        start(n, 1);
         unsigned long long state = 0x9e3779b97f4a7c15ULL;
         for (Index i = 0; i < n; ++i)
           {
@@ -468,7 +468,7 @@ namespace unilateral::lcp
         const Vector b_column     = B.col(column);
         const double free_target  = 2e-14 * norm_on(free_rows, b_column);
         const double fixed_target = 2e-14 * norm_on(fixed_rows, b_column);
-        const auto small_enough = [&](const Vector &residual) {
+        const auto   small_enough = [&](const Vector &residual) {
           return norm_on(free_rows, residual) <= free_target &&
                  norm_on(fixed_rows, residual) <= fixed_target;
         };
@@ -478,9 +478,9 @@ namespace unilateral::lcp
           continue;
         DenseMatrix z_matrix;
         solve_with(preconditioner, r, z_matrix);
-        Vector z = z_matrix.col(0), p;
-        p               = z;
-        double rz       = r.dot(z);
+        Vector z         = z_matrix.col(0), p;
+        p                = z;
+        double rz        = r.dot(z);
         bool   converged = false;
         for (unsigned int iteration = 0; iteration < max_iterations;
              ++iteration)
@@ -526,7 +526,7 @@ namespace unilateral::lcp
                          const Vector            &r,
                          Vector                  &x)
   {
-    DenseMatrix X = x;
+    DenseMatrix X  = x;
     const bool  ok = solve(fixed, DenseMatrix(r), X);
     x              = X.col(0);
     return ok;
@@ -537,7 +537,7 @@ namespace unilateral::lcp
                          const DenseMatrix       &R,
                          DenseMatrix             &X)
   {
-    const Index n = A.rows();
+    const Index       n        = A.rows();
     const DenseMatrix coupling = multiply_columns(A, fixed, true, X);
     counters.matrix_vector_products += static_cast<unsigned int>(X.cols());
 
@@ -567,8 +567,7 @@ namespace unilateral::lcp
       {
         // A nearby factor: our own for another active set, or an inherited
         // one (A + eps I) for the same.
-        const ActiveSetFactor *nearby =
-          own_valid ? own.get() : inherited.get();
+        const ActiveSetFactor *nearby = own_valid ? own.get() : inherited.get();
         if (nearby != nullptr)
           {
             const unsigned int changes = count_changes(nearby->fixed, fixed);

@@ -46,9 +46,9 @@ namespace unilateral::lcp
     void
     downgrade(Report &report, const std::string &message)
     {
-      report.status  = Status::inaccurate;
-      report.message = report.message.empty() ? message :
-                                                message + "; " + report.message;
+      report.status = Status::inaccurate;
+      report.message =
+        report.message.empty() ? message : message + "; " + report.message;
     }
   } // namespace
 
@@ -89,17 +89,15 @@ namespace unilateral::lcp
   }
 
   void
-  check_finite(const Problem  &problem,
-               const Solution &solution,
-               Report         &report)
+  check_finite(const Problem &problem, const Solution &solution, Report &report)
   {
     if (!report.converged())
       return;
-    const char *what = !solution.u.allFinite()           ? "u" :
-                       !solution.lambda.allFinite()      ? "the multipliers" :
-                       !std::isfinite(report.energy)     ? "the energy" :
-                       !std::isfinite(report.kkt.max())  ? "the residuals" :
-                                                           nullptr;
+    const char *what = !solution.u.allFinite()          ? "u" :
+                       !solution.lambda.allFinite()     ? "the multipliers" :
+                       !std::isfinite(report.energy)    ? "the energy" :
+                       !std::isfinite(report.kkt.max()) ? "the residuals" :
+                                                          nullptr;
     if (what == nullptr)
       return;
     // The sizes that met, for the user to see which is out of range.
@@ -109,9 +107,9 @@ namespace unilateral::lcp
         largest_u = std::max(largest_u, std::abs(value));
     std::ostringstream message;
     message << std::setprecision(3)
-            << "the answer is not a finite number (NaN or infinity in "
-            << what << "): displacements up to " << largest_u
-            << " under loads up to " << problem.b.lpNorm<Eigen::Infinity>()
+            << "the answer is not a finite number (NaN or infinity in " << what
+            << "): displacements up to " << largest_u << " under loads up to "
+            << problem.b.lpNorm<Eigen::Infinity>()
             << " with a stiffness (mean diagonal of A) of "
             << (problem.size() > 0 ? problem.A.diagonal().mean() : 0.0)
             << " are beyond double precision; give the loads and the "
@@ -128,8 +126,8 @@ namespace unilateral::lcp
     message << std::setprecision(3)
             << "the method's stopping test passed but the relative KKT "
                "residual is "
-            << report.kkt.max() << " > 'Solver/KKT tolerance' = "
-            << kkt_tolerance;
+            << report.kkt.max()
+            << " > 'Solver/KKT tolerance' = " << kkt_tolerance;
     report.status  = Status::inaccurate;
     report.message = message.str();
   }
@@ -184,10 +182,9 @@ namespace unilateral::lcp
     const std::vector<char> in_S     = problem.constrained_mask();
     double                  residual = 0;
     for (Index i = 0; i < problem.size(); ++i)
-      residual =
-        std::max(residual, in_S[i] ? -lambda[i] : std::abs(lambda[i]));
-    const double forces     = scale.forces;
-    const double resolution = scale.resolution;
+      residual = std::max(residual, in_S[i] ? -lambda[i] : std::abs(lambda[i]));
+    const double       forces     = scale.forces;
+    const double       resolution = scale.resolution;
     std::ostringstream message;
     message << std::setprecision(3);
     if (resolution > kkt_tolerance)

@@ -44,8 +44,7 @@ namespace unilateral::lcp
          const unsigned int line,
          const std::string &problem)
     {
-      throw InputError(file_name + ":" + std::to_string(line) + ": " +
-                       problem);
+      throw InputError(file_name + ":" + std::to_string(line) + ": " + problem);
     }
 
     bool
@@ -94,17 +93,21 @@ namespace unilateral::lcp
     std::transform(object.begin(), object.end(), object.begin(), ::tolower);
     std::transform(format.begin(), format.end(), format.begin(), ::tolower);
     std::transform(field.begin(), field.end(), field.begin(), ::tolower);
-    std::transform(symmetry.begin(), symmetry.end(), symmetry.begin(),
+    std::transform(symmetry.begin(),
+                   symmetry.end(),
+                   symmetry.begin(),
                    ::tolower);
     if (banner != "%%MatrixMarket" || object != "matrix" ||
         format != "coordinate")
-      fail(file_name, 1,
+      fail(file_name,
+           1,
            "expected '%%MatrixMarket matrix coordinate real "
            "symmetric|general'");
     if (field != "real" && field != "integer" && field != "double")
       fail(file_name, 1, "field '" + field + "' not supported (real only)");
     if (symmetry != "general" && symmetry != "symmetric")
-      fail(file_name, 1,
+      fail(file_name,
+           1,
            "symmetry '" + symmetry + "' not supported (general or symmetric)");
     const bool symmetric = (symmetry == "symmetric");
 
@@ -117,7 +120,8 @@ namespace unilateral::lcp
         std::istringstream size_line(line);
         if (!(size_line >> rows >> cols >> entries) || rows < 0 || cols < 0 ||
             entries < 0)
-          fail(file_name, line_number,
+          fail(file_name,
+               line_number,
                "expected the size line 'rows columns entries'");
         break;
       }
@@ -143,7 +147,8 @@ namespace unilateral::lcp
             !parse_index(sj, j) || !parse_number(sv, value))
           fail(file_name, line_number, "expected 'row column value'");
         if (i < 1 || i > rows || j < 1 || j > cols)
-          fail(file_name, line_number,
+          fail(file_name,
+               line_number,
                "index (" + si + ", " + sj + ") outside the " +
                  std::to_string(rows) + " x " + std::to_string(cols) +
                  " matrix (indices are 1-based)");
@@ -155,7 +160,8 @@ namespace unilateral::lcp
         ++read;
       }
     if (read < entries)
-      fail(file_name, line_number,
+      fail(file_name,
+           line_number,
            "file ends after " + std::to_string(read) + " of " +
              std::to_string(entries) + " entries");
     // An entry beyond the announced count would be dropped silently, and
@@ -164,7 +170,8 @@ namespace unilateral::lcp
       {
         ++line_number;
         if (!is_comment_or_blank(line))
-          fail(file_name, line_number,
+          fail(file_name,
+               line_number,
                "more entries than the " + std::to_string(entries) +
                  " the size line announces; correct the count or remove "
                  "the extra entries");
@@ -263,22 +270,27 @@ namespace unilateral::lcp
         double             bound = 0;
         if (!(tokens >> si >> sb) || (tokens >> extra) || !parse_index(si, i) ||
             !parse_number(sb, bound))
-          fail(file_name, line_number,
+          fail(file_name,
+               line_number,
                "expected 'index lower_bound' (1-based index)");
         if (i < 1 || i > std::numeric_limits<Index>::max())
-          fail(file_name, line_number,
+          fail(file_name,
+               line_number,
                "index " + si + " must be >= 1 (indices are 1-based)");
         if (size >= 0 && i > size)
-          fail(file_name, line_number,
+          fail(file_name,
+               line_number,
                "index " + si + " is outside 1.." + std::to_string(size) +
                  ", the rows of A (indices are 1-based)");
         if (const auto [first, inserted] = first_line.emplace(i, line_number);
             !inserted)
-          fail(file_name, line_number,
+          fail(file_name,
+               line_number,
                "index " + si + " appears twice (first on line " +
                  std::to_string(first->second) + ")");
         if (!std::isfinite(bound))
-          fail(file_name, line_number,
+          fail(file_name,
+               line_number,
                "lower bound must be a finite number (an index without a "
                "bound is not listed)");
         indices.push_back(static_cast<Index>(i - 1));
@@ -310,8 +322,8 @@ namespace unilateral::lcp
       throw InputError("dimension mismatch: A in '" + matrix_file + "' is " +
                        std::to_string(problem.A.rows()) + " x " +
                        std::to_string(problem.A.cols()) + " but b in '" +
-                       rhs_file + "' has " +
-                       std::to_string(problem.b.size()) + " entries");
+                       rhs_file + "' has " + std::to_string(problem.b.size()) +
+                       " entries");
     read_constraints(constraints_file,
                      problem.constrained,
                      problem.lower_bound,

@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 
 #include <cmath>
-#include <stdexcept>
 #include <ostream>
+#include <stdexcept>
 
 namespace unilateral::lcp
 {
@@ -43,7 +43,10 @@ namespace unilateral::lcp
      *   q_P <- -Q q_P, q_O <- q_O - M_OP Q q_P (the same for B).
      */
     void
-    pivot(DenseMatrix &M, Vector &q, DenseMatrix &B, const std::vector<Index> &P)
+    pivot(DenseMatrix              &M,
+          Vector                   &q,
+          DenseMatrix              &B,
+          const std::vector<Index> &P)
     {
       const Index k = static_cast<Index>(P.size());
       DenseMatrix M_PP(k, k), M_P(k, M.cols()), B_P(k, B.cols()),
@@ -83,11 +86,11 @@ namespace unilateral::lcp
   } // namespace
 
   void
-  principal_pivoting(const Problem      &problem,
-                     const unsigned int  limit,
-                     Solution           &solution,
-                     Report             &report,
-                     std::ostream       *progress)
+  principal_pivoting(const Problem     &problem,
+                     const unsigned int limit,
+                     Solution          &solution,
+                     Report            &report,
+                     std::ostream      *progress)
   {
     const Index n = problem.size();
     if (problem.n_constrained() != n)
@@ -99,16 +102,16 @@ namespace unilateral::lcp
     for (Index i = 0; i < n; ++i)
       if (problem.A.coeff(i, i) > 0)
         scale[i] = 1.0 / std::sqrt(problem.A.coeff(i, i));
-    DenseMatrix M = scale.asDiagonal() * DenseMatrix(problem.A) *
-                    scale.asDiagonal();
+    DenseMatrix M =
+      scale.asDiagonal() * DenseMatrix(problem.A) * scale.asDiagonal();
     const Vector l_scaled = problem.lower_bound.cwiseQuotient(scale);
     Vector       q        = M * l_scaled - scale.cwiseProduct(problem.b);
     DenseMatrix  B        = DenseMatrix::Identity(n, n);
     // z_basic[i]: z_i (not w_i) is the basic variable of row i.
     std::vector<char> z_basic(n, 0);
 
-    const double scale_q = std::max(1.0, q.lpNorm<Eigen::Infinity>());
-    const double q_tolerance = 1e-14 * scale_q;
+    const double scale_q         = std::max(1.0, q.lpNorm<Eigen::Infinity>());
+    const double q_tolerance     = 1e-14 * scale_q;
     const double pivot_tolerance = 1e-12;
 
     for (unsigned int iteration = 0;; ++iteration)
@@ -142,14 +145,9 @@ namespace unilateral::lcp
             Index s = -1;
             for (Index i = 0; i < n; ++i)
               if (M(i, t) < -pivot_tolerance &&
-                  (s < 0 || lexicographically_larger(B,
-                                                     i,
-                                                     q[i] / q[t],
-                                                     M(i, t),
-                                                     s,
-                                                     q[s] / q[t],
-                                                     M(s, t),
-                                                     t)))
+                  (s < 0 ||
+                   lexicographically_larger(
+                     B, i, q[i] / q[t], M(i, t), s, q[s] / q[t], M(s, t), t)))
                 s = i;
             if (s < 0)
               {
@@ -164,8 +162,7 @@ namespace unilateral::lcp
           }
         z_basic[t] = !z_basic[t];
         if (progress != nullptr && ((iteration + 1) & iteration) == 0)
-          *progress << "    graves iteration " << iteration + 1
-                    << std::endl;
+          *progress << "    graves iteration " << iteration + 1 << std::endl;
       }
 
     // Basic z take the values of q; nonbasic ones are zero.

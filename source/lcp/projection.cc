@@ -110,7 +110,7 @@ namespace unilateral::lcp
           Report                 &report,
           std::ostream           *progress)
   {
-    PhaseTimer timer(report, "projection");
+    PhaseTimer                     timer(report, "projection");
     std::unique_ptr<LabelledLines> labelled_buffer;
     std::unique_ptr<std::ostream>  labelled;
     if (progress != nullptr)
@@ -137,10 +137,10 @@ namespace unilateral::lcp
         const bool stage_left = eps_k * 1e-3 >= last_eps;
         // Wandering counts as failure while a continuation stage is left.
         projection_parameters.max_iterations =
-          !stage_left                    ? parameters.max_iterations :
-          parameters.max_iterations > 0 ? std::min(parameters.max_iterations,
-                                                   50u) :
-                                          50u;
+          !stage_left ? parameters.max_iterations :
+          parameters.max_iterations > 0 ?
+                        std::min(parameters.max_iterations, 50u) :
+                        50u;
         solution   = start;
         projection = run_projection_method(problem,
                                            projection_parameters,

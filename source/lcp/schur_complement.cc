@@ -15,8 +15,8 @@ namespace unilateral::lcp
     const Index n_c = problem.n_constrained();
     if (static_cast<unsigned int>(n_c) > max_dense_size)
       throw InputError(
-        "the Schur complement would be a dense " + std::to_string(n_c) +
-        " x " + std::to_string(n_c) +
+        "the Schur complement would be a dense " + std::to_string(n_c) + " x " +
+        std::to_string(n_c) +
         " matrix, larger than 'Solver/Maximum dense size' = " +
         std::to_string(max_dense_size) +
         ": solve the full LCP (Schur complement = false) or raise the limit");
@@ -33,8 +33,8 @@ namespace unilateral::lcp
     const Vector Ax = problem.A * x;
     reduced.b.resize(n_c);
     for (Index k = 0; k < n_c; ++k)
-      reduced.b[k] = problem.b[problem.constrained[k]] -
-                     Ax[problem.constrained[k]];
+      reduced.b[k] =
+        problem.b[problem.constrained[k]] - Ax[problem.constrained[k]];
 
     // Columns of A_hat in blocks: x_S = e_j, x_E = -A_EE^-1 A_Ej, then
     // A_hat e_j = (A x)_S.

@@ -74,13 +74,13 @@ namespace unilateral::lcp
       const SolverInfo &info = *attempt.method;
       if (info.dense && static_cast<unsigned int>(problem.size()) >
                           attempt.parameters.max_dense_size)
-        throw InputError(
-          "method '" + info.name + "' is dense and the LCP has " +
-          std::to_string(problem.size()) +
-          " unknowns, more than 'Solver/Maximum dense size' = " +
-          std::to_string(attempt.parameters.max_dense_size) +
-          ": use 'Schur complement = true' (" + info.name +
-          " works on S only) or a sparse method");
+        throw InputError("method '" + info.name +
+                         "' is dense and the LCP has " +
+                         std::to_string(problem.size()) +
+                         " unknowns, more than 'Solver/Maximum dense size' = " +
+                         std::to_string(attempt.parameters.max_dense_size) +
+                         ": use 'Schur complement = true' (" + info.name +
+                         " works on S only) or a sparse method");
       PhaseTimer timer(report, "solve");
       info.create(attempt.parameters, attempt.parameters.of(info.name))
         ->solve(problem, solution, report, progress);
@@ -128,7 +128,7 @@ namespace unilateral::lcp
       const SolverParameters &parameters = attempt.parameters;
       Outcome                 outcome;
       Report                 &report = outcome.report;
-      report.solver                   = info.name;
+      report.solver                  = info.name;
 
       const double relative_eps = relative_regularisation(attempt);
       const bool   regularise   = relative_eps > 0;
@@ -182,9 +182,9 @@ namespace unilateral::lcp
       // A method that ran on A itself (pdpc, interior_point) continues from
       // the problem's regularisation.
       const double first_eps =
-        regularise ? report.regularisation :
-                     1e3 * std::max(attempt.auto_regularisation, 1e-12) *
-                       mean_diagonal;
+        regularise ?
+          report.regularisation :
+          1e3 * std::max(attempt.auto_regularisation, 1e-12) * mean_diagonal;
       project(problem,
               parameters,
               first_eps,
@@ -290,8 +290,8 @@ namespace unilateral::lcp
           const bool retry = next->method == attempt.method;
           if (!retry)
             start = Solution();
-          solution      = start;
-          Outcome later = run_attempt(problem, *next, solution, progress);
+          solution            = start;
+          Outcome       later = run_attempt(problem, *next, solution, progress);
           const Report &earlier = outcome.report;
           later.report.counters += earlier.counters;
           if (retry)
@@ -305,8 +305,7 @@ namespace unilateral::lcp
               const std::string note =
                 earlier.message + " after " +
                 quantity(earlier.iterations, "iteration") +
-                "; continued from the " + next->method->label +
-                "'s answer";
+                "; continued from the " + next->method->label + "'s answer";
               later.report.message = later.report.message.empty() ?
                                        note :
                                        note + "; " + later.report.message;
@@ -341,8 +340,8 @@ namespace unilateral::lcp
            Report         &report,
            std::ostream   *progress)
     {
-      const Attempt     check_attempt = follow_up_attempt(verification, attempt);
-      const SolverInfo &checker       = *check_attempt.method;
+      const Attempt check_attempt = follow_up_attempt(verification, attempt);
+      const SolverInfo &checker   = *check_attempt.method;
       if ((checker.dense && static_cast<unsigned int>(problem.size()) >
                               attempt.parameters.max_dense_size) ||
           (checker.every_unknown_constrained &&
@@ -354,27 +353,24 @@ namespace unilateral::lcp
         run_attempts(problem, check_attempt, check, progress);
       report.counters += check_report.counters;
       report.add_times(check_report, "verification: ");
-      if (check_report.converged() &&
-          kkt_residuals(problem, check.u).max() <=
-            attempt.parameters.kkt_tolerance)
+      if (check_report.converged() && kkt_residuals(problem, check.u).max() <=
+                                        attempt.parameters.kkt_tolerance)
         {
-          report.message +=
-            "; but " + label + " solved it in " +
-            quantity(check_report.iterations +
-                       check_report.projection_iterations,
-                     "iteration") +
-            (report.status == Status::infeasible ?
-               ", so the claim came from round-off" :
-               "") +
-            ": the answer given is " + label + "'s";
+          report.message += "; but " + label + " solved it in " +
+                            quantity(check_report.iterations +
+                                       check_report.projection_iterations,
+                                     "iteration") +
+                            (report.status == Status::infeasible ?
+                               ", so the claim came from round-off" :
+                               "") +
+                            ": the answer given is " + label + "'s";
           report.status = Status::converged;
           solution      = check;
         }
       else if (check_report.status == Status::infeasible)
         {
-          report.message = check_report.message + "; " +
-                           attempt.method->label + " had ended " +
-                           to_string(report.status);
+          report.message = check_report.message + "; " + attempt.method->label +
+                           " had ended " + to_string(report.status);
           report.status = Status::infeasible;
         }
       else
@@ -394,7 +390,7 @@ namespace unilateral::lcp
       const Attempt first{&SolverRegistry::get(parameters.method),
                           parameters,
                           auto_regularisation};
-      Report report = run_attempts(problem, first, solution, progress);
+      Report        report = run_attempts(problem, first, solution, progress);
       if (const FollowUp *verification =
             declared_follow_up(*first.method,
                                parameters,
@@ -443,15 +439,15 @@ namespace unilateral::lcp
         }
       SolverParameters reduced_parameters = parameters;
       reduced_parameters.schur_complement = false;
-      const Report reduced_report = solve_full(schur->reduced_problem(),
+      const Report reduced_report         = solve_full(schur->reduced_problem(),
                                                reduced_parameters,
                                                reduced_solution,
                                                progress,
                                                sc_eps);
-      report.status                = reduced_report.status;
-      report.message               = reduced_report.message;
-      report.iterations            = reduced_report.iterations;
-      report.projected             = reduced_report.projected;
+      report.status                       = reduced_report.status;
+      report.message                      = reduced_report.message;
+      report.iterations                   = reduced_report.iterations;
+      report.projected                    = reduced_report.projected;
       report.projection_iterations = reduced_report.projection_iterations;
       report.regularisation        = reduced_report.regularisation;
       report.counters += reduced_report.counters;

@@ -23,8 +23,7 @@ namespace unilateral::lcp
           {
             if (found != nullptr)
               throw std::logic_error("two methods are registered as " + what +
-                                     ": " + found->name + " and " +
-                                     info.name);
+                                     ": " + found->name + " and " + info.name);
             found = &info;
           }
       if (found == nullptr)
@@ -42,7 +41,9 @@ namespace unilateral::lcp
           names.push_back(info.name);
       std::string result;
       for (std::size_t k = 0; k < names.size(); ++k)
-        result += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") +
+        result += (k == 0                ? "" :
+                   k + 1 == names.size() ? " and " :
+                                           ", ") +
                   names[k];
       return result;
     }
@@ -191,9 +192,8 @@ namespace unilateral::lcp
       "eps of the regularised matrix A + eps d I, where d is the mean of the "
       "diagonal of A (so eps is unit-free). Used only by methods that need a "
       "positive definite matrix (" +
-        methods_where([](const SolverInfo &info) {
-          return info.needs_definite_matrix;
-        }) +
+        methods_where(
+          [](const SolverInfo &info) { return info.needs_definite_matrix; }) +
         "), followed by the projection step. 'auto' takes 1e-9 where the "
         "scene's bodies can float (masonry: blocks are free to move, so A is "
         "singular) and 0 elsewhere (the plate, LCP files), where 1e-9 follows "
@@ -249,8 +249,8 @@ namespace unilateral::lcp
   SolverParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    method           = prm.get("Method");
-    schur_complement = prm.get_bool("Schur complement");
+    method                = prm.get("Method");
+    schur_complement      = prm.get_bool("Schur complement");
     const std::string eps = prm.get("Regularisation");
     if (eps == "auto")
       regularisation = -1;

@@ -27,12 +27,12 @@ namespace unilateral::lcp
 
   struct SparseCholesky::Implementation
   {
-    cholmod_common common;
+    cholmod_common  common;
     cholmod_factor *factor       = nullptr;
     bool            factor_valid = false;
     // The simplicial LDL' copy of factor that row modifications work on,
     // null until the first one after a factorisation.
-    cholmod_factor *modified     = nullptr;
+    cholmod_factor *modified = nullptr;
     // Position of each index in the fill-reducing ordering (old-to-new).
     std::vector<Index> inverse_ordering;
     // For each position of the ordering: the entries of L in its column and
@@ -49,15 +49,15 @@ namespace unilateral::lcp
     std::vector<Index> permuted_source;
     unsigned int       factorisations_of_pattern = 0;
     // Marks for row_pattern (all zero between calls) and its result.
-    std::vector<char>   row_mark;
-    std::vector<Index>  row_pattern_positions;
-    double          analysis_flops     = 0;
-    double          modification_flops = 0;
+    std::vector<char>  row_mark;
+    std::vector<Index> row_pattern_positions;
+    double             analysis_flops     = 0;
+    double             modification_flops = 0;
     // Fingerprint of the analysed pattern (size, nonzeros, hash).
-    Index           pattern_size = -1;
-    Index           pattern_nonzeros = -1;
-    std::uint64_t   pattern_hash = 0;
-    bool            pattern_relaxed = false;
+    Index         pattern_size     = -1;
+    Index         pattern_nonzeros = -1;
+    std::uint64_t pattern_hash     = 0;
+    bool          pattern_relaxed  = false;
 
     /// CHOLMOD's supernode amalgamation for the next analysis (see
     /// SparseCholesky::relaxed_supernodes).
@@ -87,8 +87,8 @@ namespace unilateral::lcp
       omp_set_max_active_levels(0);
       cholmod_start(&common);
       // Errors become return codes we check, never prints to stderr.
-      common.print          = 0;
-      common.error_handler  = nullptr;
+      common.print                      = 0;
+      common.error_handler              = nullptr;
       common.quick_return_if_not_posdef = 1;
       // Orderings: AMD (set per analysis below). METIS's nested dissection
       // takes several times as long and saves few flops on the stack bond
@@ -261,15 +261,14 @@ namespace unilateral::lcp
         Implementation::require_ordering_memory(A);
         common.nmethods           = 1;
         common.method[0].ordering = CHOLMOD_AMD;
-        factor = cholmod_analyze(&matrix, &common);
-        const double amd_flops = common.fl;
-        const double amd_lnz   = common.lnz;
+        factor                    = cholmod_analyze(&matrix, &common);
+        const double amd_flops    = common.fl;
+        const double amd_lnz      = common.lnz;
         if (try_nested_dissection && factor != nullptr &&
             amd_flops >= 500 * amd_lnz)
           {
             common.method[0].ordering = CHOLMOD_METIS;
-            cholmod_factor *nested =
-              cholmod_analyze(&matrix, &common);
+            cholmod_factor *nested    = cholmod_analyze(&matrix, &common);
             if (nested != nullptr && common.fl < amd_flops)
               std::swap(factor, nested);
             else
@@ -288,18 +287,16 @@ namespace unilateral::lcp
         common.nmethods           = 1;
         common.method[0].ordering = CHOLMOD_GIVEN;
         factor                    = cholmod_analyze_p(
-          &matrix, const_cast<Index *>(ordering.data()), nullptr, 0,
-          &common);
+          &matrix, const_cast<Index *>(ordering.data()), nullptr, 0, &common);
       }
     if (factor == nullptr)
       throw_failure("analysis", A.rows());
     // The numeric factor is allocated next: refuse it here, with a
     // message, rather than be killed by the kernel half-way (and leave
     // no analysis behind that a later call could take for this one's).
-    const double factor_bytes =
-      factor->is_super ?
-        8.0 * static_cast<double>(factor->xsize) :
-        (8.0 + sizeof(Index)) * common.lnz;
+    const double factor_bytes = factor->is_super ?
+                                  8.0 * static_cast<double>(factor->xsize) :
+                                  (8.0 + sizeof(Index)) * common.lnz;
     try
       {
         memory::require(factor_bytes,
@@ -349,12 +346,8 @@ namespace unilateral::lcp
     if (impl.factor == nullptr || impl.pattern_size != A.rows() ||
         impl.pattern_nonzeros != A.nonZeros() || impl.pattern_hash != hash ||
         impl.pattern_relaxed != relaxed_supernodes)
-      impl.analyse(A,
-                   ordering,
-                   hash,
-                   relaxed_supernodes,
-                   try_nested_dissection,
-                   counters);
+      impl.analyse(
+        A, ordering, hash, relaxed_supernodes, try_nested_dissection, counters);
 
     if (impl.modified != nullptr)
       cholmod_free_factor(&impl.modified, &impl.common);
@@ -370,8 +363,8 @@ namespace unilateral::lcp
         for (std::size_t e = 0; e < impl.permuted_source.size(); ++e)
           value[e] = source[impl.permuted_source[e]];
         double zero[2] = {0, 0};
-        cholmod_super_numeric(impl.permuted, nullptr, zero, impl.factor,
-                              &impl.common);
+        cholmod_super_numeric(
+          impl.permuted, nullptr, zero, impl.factor, &impl.common);
       }
     else
       cholmod_factorize(&matrix, impl.factor, &impl.common);
@@ -416,8 +409,13 @@ namespace unilateral::lcp
         if (impl.modified == nullptr)
           return false;
         // Simplicial LDL', columns not packed so that they can grow.
-        if (!cholmod_change_factor(CHOLMOD_REAL, false, false, false, false,
-                                   impl.modified, &impl.common))
+        if (!cholmod_change_factor(CHOLMOD_REAL,
+                                   false,
+                                   false,
+                                   false,
+                                   false,
+                                   impl.modified,
+                                   &impl.common))
           {
             cholmod_free_factor(&impl.modified, &impl.common);
             return false;
@@ -445,9 +443,8 @@ namespace unilateral::lcp
             // The parent of the supernode's last column: its first row
             // below the diagonal block. Column j of the supernode holds
             // length - (j - first) entries.
-            double tail = length > columns ?
-                            path_entries[rows[row_from[s] + columns]] :
-                            0.;
+            double tail =
+              length > columns ? path_entries[rows[row_from[s] + columns]] : 0.;
             for (Index j = super[s + 1]; j-- > super[s];)
               {
                 tail += length - (j - super[s]);
@@ -464,7 +461,8 @@ namespace unilateral::lcp
           {
             Index parent = -1;
             for (Index e = column_start[j] + 1;
-                 e < column_start[j] + entries[j]; ++e)
+                 e < column_start[j] + entries[j];
+                 ++e)
               if (parent < 0 || rows[e] < parent)
                 parent = rows[e];
             path_entries[j] =
@@ -511,7 +509,8 @@ namespace unilateral::lcp
         if (row[k] <= j)
           {
             ++start_of_row[std::max(inverse_ordering[row[k]],
-                                    inverse_ordering[j]) + 1];
+                                    inverse_ordering[j]) +
+                           1];
             ++n_entries;
           }
     for (Index r = 0; r < n; ++r)
@@ -530,9 +529,14 @@ namespace unilateral::lcp
             column_of[at]   = std::min(p_i, p_j);
             ++entries_in_column[column_of[at] + 1];
           }
-    permuted = cholmod_allocate_sparse(n, n, n_entries, /*sorted=*/1,
-                                       /*packed=*/1, /*stype=*/-1,
-                                       CHOLMOD_REAL, &common);
+    permuted = cholmod_allocate_sparse(n,
+                                       n,
+                                       n_entries,
+                                       /*sorted=*/1,
+                                       /*packed=*/1,
+                                       /*stype=*/-1,
+                                       CHOLMOD_REAL,
+                                       &common);
     if (permuted == nullptr)
       return false;
     auto *const p = static_cast<Index *>(permuted->p);
@@ -597,16 +601,17 @@ namespace unilateral::lcp
       return false;
     const Index position = impl.position_of(k);
     // Row k of L as an n x 1 pattern.
-    cholmod_sparse row{};
-    Index          row_start[2] = {0, 0};
-    cholmod_sparse *row_given   = nullptr;
+    cholmod_sparse  row{};
+    Index           row_start[2] = {0, 0};
+    cholmod_sparse *row_given    = nullptr;
     if (impl.row_pattern(position, column_rows))
       {
         row_start[1] = static_cast<Index>(impl.row_pattern_positions.size());
-        row          = Implementation::column_view(
-          impl.modified->n, row_start, impl.row_pattern_positions.data(),
-          nullptr);
-        row_given = &row;
+        row          = Implementation::column_view(impl.modified->n,
+                                          row_start,
+                                          impl.row_pattern_positions.data(),
+                                          nullptr);
+        row_given    = &row;
       }
     if (!cholmod_rowdel(position, row_given, impl.modified, &impl.common))
       {
@@ -623,7 +628,7 @@ namespace unilateral::lcp
   }
 
   bool
-  SparseCholesky::add_row(const Index                 k,
+  SparseCholesky::add_row(const Index                k,
                           const std::vector<Index>  &rows,
                           const std::vector<double> &values)
   {
@@ -636,9 +641,11 @@ namespace unilateral::lcp
     std::vector<Index> permuted_rows(rows.size());
     for (std::size_t entry = 0; entry < rows.size(); ++entry)
       permuted_rows[entry] = impl.position_of(rows[entry]);
-    cholmod_sparse column = Implementation::column_view(
-      impl.modified->n, column_start, permuted_rows.data(),
-      const_cast<double *>(values.data()));
+    cholmod_sparse column =
+      Implementation::column_view(impl.modified->n,
+                                  column_start,
+                                  permuted_rows.data(),
+                                  const_cast<double *>(values.data()));
     if (!cholmod_rowadd(position, &column, impl.modified, &impl.common))
       {
         impl.factor_valid = false;
@@ -709,7 +716,7 @@ namespace unilateral::lcp
   double
   SparseCholesky::factor_nonzeros() const
   {
-    const auto &impl = *implementation;
+    const auto           &impl   = *implementation;
     const cholmod_factor *factor = impl.current();
     if (factor == nullptr)
       return 0;
@@ -807,8 +814,8 @@ namespace unilateral::lcp
       const double         *Lx = static_cast<const double *>(L->x);
       for (std::size_t q = 0; q < block.nodes.size(); ++q)
         {
-          const Index s   = block.nodes[q];
-          auto        Y_s = block.Y.middleRows(block.offsets[q], tree.columns(s));
+          const Index s = block.nodes[q];
+          auto Y_s      = block.Y.middleRows(block.offsets[q], tree.columns(s));
           if (tree.super)
             {
               const Index *row_start   = static_cast<const Index *>(L->pi);
@@ -819,7 +826,9 @@ namespace unilateral::lcp
               const Eigen::Map<const DenseMatrix, 0, Stride> L11(
                 Lx + value_start[s], nscol, nscol, Stride(nsrow));
               const Eigen::Map<const DenseMatrix, 0, Stride> L21(
-                Lx + value_start[s] + nscol, nsrow - nscol, nscol,
+                Lx + value_start[s] + nscol,
+                nsrow - nscol,
+                nscol,
                 Stride(nsrow));
               L11.triangularView<Eigen::Lower>().solveInPlace(Y_s);
               if (nsrow > nscol)
@@ -862,10 +871,8 @@ namespace unilateral::lcp
         for (std::size_t b = a; b < blocks.size(); ++b)
           {
             const PathBlock &A_block = blocks[a], &B_block = blocks[b];
-            auto             G_ab    = G.block(a * width,
-                                   b * width,
-                                   A_block.Y.cols(),
-                                   B_block.Y.cols());
+            auto             G_ab =
+              G.block(a * width, b * width, A_block.Y.cols(), B_block.Y.cols());
             if (a == b)
               {
                 G_ab.noalias() = A_block.Y.transpose() * A_block.Y;

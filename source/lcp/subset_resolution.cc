@@ -24,13 +24,13 @@ namespace unilateral::lcp
     {
       const Index n = problem.size();
       const Index k = static_cast<Index>(subset.size());
-      const auto  load_of = [&](const Index j, const Index c,
-                               DenseMatrix &load, const bool set) {
-        for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-          if (!factor.fixed[it.row()])
-            load(it.row(), c) = set ? -it.value() : 0.0;
-        load(j, c) = set ? factor.fixed_diagonal[j] : 0.0;
-      };
+      const auto  load_of =
+        [&](const Index j, const Index c, DenseMatrix &load, const bool set) {
+          for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+            if (!factor.fixed[it.row()])
+              load(it.row(), c) = set ? -it.value() : 0.0;
+          load(j, c) = set ? factor.fixed_diagonal[j] : 0.0;
+        };
       constexpr Index block = 32;
       DenseMatrix     M(k, k);
       DenseMatrix     load = DenseMatrix::Zero(n, std::min(block, k)), response;
@@ -137,8 +137,8 @@ namespace unilateral::lcp
 
     Solution reduced_solution;
     Report   reduced_report;
-    principal_pivoting(reduced, 10 * k + 100, reduced_solution,
-                       reduced_report, nullptr);
+    principal_pivoting(
+      reduced, 10 * k + 100, reduced_solution, reduced_report, nullptr);
     if (!reduced_report.converged())
       return SubsetResolution::no_solution;
 

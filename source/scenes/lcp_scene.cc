@@ -57,8 +57,8 @@ namespace unilateral
          {std::pair{"Matrix file", matrix_file},
           std::pair{"Right-hand side file", rhs_file},
           std::pair{"Constraints file", constraints_file}})
-      check_parameter(!value.empty(), "LCP", name, "''",
-                      "an LCP needs all three files");
+      check_parameter(
+        !value.empty(), "LCP", name, "''", "an LCP needs all three files");
   }
 
   bool

@@ -12,6 +12,8 @@
 
 #include <unilateral/fe/bogner_fox_schmit.h>
 
+#include "../test_tools.h"
+
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
@@ -19,12 +21,10 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
-#include "../test_tools.h"
-
 using namespace dealii;
-using unilateral::fe::BognerFoxSchmit;
 using test_tools::Polynomial;
 using test_tools::verdict;
+using unilateral::fe::BognerFoxSchmit;
 
 namespace
 {
@@ -54,14 +54,15 @@ namespace
         scale_v = std::max(scale_v, std::abs(p.value(x)));
         scale_g = std::max(scale_g, p.gradient(x).norm());
         scale_h = std::max(scale_h, p.full_hessian(x).norm());
-        error_v = std::max(error_v,
-                           std::abs(element.value(coefficients, x) - p.value(x)));
-        error_g = std::max(error_g,
-                           (element.gradient(coefficients, x) - p.gradient(x))
-                             .norm());
-        error_h = std::max(error_h,
-                           (element.hessian(coefficients, x) - p.full_hessian(x))
-                             .norm());
+        error_v =
+          std::max(error_v,
+                   std::abs(element.value(coefficients, x) - p.value(x)));
+        error_g =
+          std::max(error_g,
+                   (element.gradient(coefficients, x) - p.gradient(x)).norm());
+        error_h = std::max(
+          error_h,
+          (element.hessian(coefficients, x) - p.full_hessian(x)).norm());
       }
     error = std::max(error, error_v / std::max(scale_v, 1e-300));
     if (scale_g > 0)
@@ -82,10 +83,13 @@ namespace
     for (unsigned int i = 0; i < BognerFoxSchmit::dofs_per_cell; ++i)
       for (unsigned int v = 0; v < 4; ++v)
         {
-          const Point<2>       x = element.vertex(v);
-          const Tensor<1, 2>   g = element.shape_gradient(i, x);
-          const Tensor<2, 2>   h = element.shape_hessian(i, x);
-          const double dofs[4] = {element.shape_value(i, x), g[0], g[1], h[0][1]};
+          const Point<2>     x       = element.vertex(v);
+          const Tensor<1, 2> g       = element.shape_gradient(i, x);
+          const Tensor<2, 2> h       = element.shape_hessian(i, x);
+          const double       dofs[4] = {element.shape_value(i, x),
+                                        g[0],
+                                        g[1],
+                                        h[0][1]};
           for (unsigned int c = 0; c < 4; ++c)
             {
               const double expected =
@@ -104,9 +108,9 @@ namespace
     bool all_monomials = true;
     for (unsigned int i = 0; i <= 3; ++i)
       for (unsigned int j = 0; j <= 3; ++j)
-        all_monomials = all_monomials &&
-                        interpolation_error(element, Polynomial::monomial(i, j)) <
-                          1e-12;
+        all_monomials =
+          all_monomials &&
+          interpolation_error(element, Polynomial::monomial(i, j)) < 1e-12;
     verdict("all 16 monomials x^i y^j (i, j <= 3) reproduced exactly "
             "(value, gradient, Hessian; relative error < 1e-12)",
             all_monomials);
@@ -130,9 +134,9 @@ namespace
   // largest magnitude seen.
   struct Jumps
   {
-    double first_order  = 0; ///< value and gradient
-    double second_normal = 0;
-    unsigned int n_edges = 0;
+    double       first_order   = 0; ///< value and gradient
+    double       second_normal = 0;
+    unsigned int n_edges       = 0;
   };
 
   Jumps
@@ -140,14 +144,16 @@ namespace
              const std::vector<unsigned int> &bfs_index,
              const Vector<double>            &dofs)
   {
-    auto coefficients_of = [&](const DoFHandler<2>::active_cell_iterator &cell) {
-      std::vector<types::global_dof_index> local(BognerFoxSchmit::dofs_per_cell);
-      cell->get_dof_indices(local);
-      BognerFoxSchmit::Coefficients c;
-      for (unsigned int i = 0; i < local.size(); ++i)
-        c[bfs_index[i]] = dofs[local[i]];
-      return c;
-    };
+    auto coefficients_of =
+      [&](const DoFHandler<2>::active_cell_iterator &cell) {
+        std::vector<types::global_dof_index> local(
+          BognerFoxSchmit::dofs_per_cell);
+        cell->get_dof_indices(local);
+        BognerFoxSchmit::Coefficients c;
+        for (unsigned int i = 0; i < local.size(); ++i)
+          c[bfs_index[i]] = dofs[local[i]];
+        return c;
+      };
     auto element_of = [](const DoFHandler<2>::active_cell_iterator &cell) {
       return BognerFoxSchmit::from_vertices(
         {{cell->vertex(0), cell->vertex(1), cell->vertex(2), cell->vertex(3)}});
@@ -162,7 +168,8 @@ namespace
             ++jumps.n_edges;
             const auto neighbor = cell->neighbor(f);
             const auto e1 = element_of(cell), e2 = element_of(neighbor);
-            const auto c1 = coefficients_of(cell), c2 = coefficients_of(neighbor);
+            const auto c1             = coefficients_of(cell),
+                       c2             = coefficients_of(neighbor);
             const unsigned int normal = f / 2; // faces 0,1: x = const
             for (const double s : {0.0, 0.1, 0.35, 0.5, 0.8, 1.0})
               {
@@ -177,9 +184,10 @@ namespace
                 scale = std::max({scale, std::abs(v1), g1.norm()});
                 scale_second =
                   std::max(scale_second, std::abs(h1[normal][normal]));
-                jumps.first_order =
-                  std::max({jumps.first_order, std::abs(v1 - v2),
-                            std::abs(g1[0] - g2[0]), std::abs(g1[1] - g2[1])});
+                jumps.first_order = std::max({jumps.first_order,
+                                              std::abs(v1 - v2),
+                                              std::abs(g1[0] - g2[0]),
+                                              std::abs(g1[1] - g2[1])});
                 jumps.second_normal =
                   std::max(jumps.second_normal,
                            std::abs(h1[normal][normal] - h2[normal][normal]));
@@ -195,11 +203,11 @@ namespace
   {
     // A non-uniform 3 x 4 mesh: every cell has a different size.
     Triangulation<2> triangulation;
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      {{0.5, 1.3, 0.8}, {0.9, 0.4, 1.1, 0.7}},
-      Point<2>(-1.0, 0.5),
-      Point<2>(1.6, 3.6));
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {{0.5, 1.3, 0.8},
+                                               {0.9, 0.4, 1.1, 0.7}},
+                                              Point<2>(-1.0, 0.5),
+                                              Point<2>(1.6, 3.6));
     const FESystem<2> fe(FE_Q<2>(1), 4);
     DoFHandler<2>     dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
@@ -229,8 +237,11 @@ namespace
       {
         std::vector<types::global_dof_index> local(16);
         cell->get_dof_indices(local);
-        const BognerFoxSchmit element = BognerFoxSchmit::from_vertices(
-          {{cell->vertex(0), cell->vertex(1), cell->vertex(2), cell->vertex(3)}});
+        const BognerFoxSchmit element =
+          BognerFoxSchmit::from_vertices({{cell->vertex(0),
+                                           cell->vertex(1),
+                                           cell->vertex(2),
+                                           cell->vertex(3)}});
         const auto nodal = element.interpolate(p);
         for (unsigned int i = 0; i < 16; ++i)
           dofs[local[i]] = nodal[bfs_index[i]];
@@ -243,19 +254,22 @@ namespace
         BognerFoxSchmit::Coefficients c;
         for (unsigned int i = 0; i < 16; ++i)
           c[bfs_index[i]] = dofs[local[i]];
-        const BognerFoxSchmit element = BognerFoxSchmit::from_vertices(
-          {{cell->vertex(0), cell->vertex(1), cell->vertex(2), cell->vertex(3)}});
+        const BognerFoxSchmit element =
+          BognerFoxSchmit::from_vertices({{cell->vertex(0),
+                                           cell->vertex(1),
+                                           cell->vertex(2),
+                                           cell->vertex(3)}});
         for (const double s : {0.25, 0.6})
           for (const double t : {0.4, 0.9})
             {
               const Point<2> x(element.vertex(0)[0] + s * element.size(0),
                                element.vertex(0)[1] + t * element.size(1));
-              error = std::max(
-                {error,
-                 std::abs(element.value(c, x) - p.value(x)),
-                 (element.hessian(c, x) - p.full_hessian(x)).norm()});
-              scale = std::max({scale, std::abs(p.value(x)),
-                                p.full_hessian(x).norm()});
+              error =
+                std::max({error,
+                          std::abs(element.value(c, x) - p.value(x)),
+                          (element.hessian(c, x) - p.full_hessian(x)).norm()});
+              scale = std::max(
+                {scale, std::abs(p.value(x)), p.full_hessian(x).norm()});
             }
       }
     verdict("a global bicubic set through nodal DOFs is reproduced on every "

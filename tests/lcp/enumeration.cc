@@ -19,8 +19,10 @@ namespace
   // A = G G^T + 0.1 I (SPD with a spread of eigenvalues) and b, entries of
   // G and b uniform in (-1, 1).
   void
-  random_spd_lcp(const Index n, std::mt19937 &generator, DenseMatrix &A,
-                 Vector &b)
+  random_spd_lcp(const Index   n,
+                 std::mt19937 &generator,
+                 DenseMatrix  &A,
+                 Vector       &b)
   {
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     DenseMatrix                            G(n, n);
@@ -53,8 +55,8 @@ namespace
         std::vector<char> fixed = rest_active;
         for (Index r = 0; r < k; ++r)
           fixed[subset[r]] = (mask >> r) & 1;
-        const Vector u      = equality_solution(A, b, fixed, lower);
-        const Vector lambda = A * u - b;
+        const Vector u        = equality_solution(A, b, fixed, lower);
+        const Vector lambda   = A * u - b;
         bool         feasible = true;
         for (const Index i : subset)
           if (fixed[i] ? lambda[i] < -1e-12 :
@@ -72,11 +74,11 @@ using namespace test;
 int
 main()
 {
-  std::mt19937 generator(20061);
+  std::mt19937                           generator(20061);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
 
-  const std::vector<Index> sizes = {1, 2, 3, 5, 8, 10, 12};
-  unsigned int failures = 0, checks = 0, unique = 0, instances = 0;
+  const std::vector<Index> sizes    = {1, 2, 3, 5, 8, 10, 12};
+  unsigned int             failures = 0, checks = 0, unique = 0, instances = 0;
   for (const Index n : sizes)
     for (unsigned int seed = 0; seed < 8; ++seed)
       {
@@ -104,9 +106,9 @@ main()
           {
             Vector       u;
             const Report report = solve_with(problem, method, u);
-            const bool   right =
-              report.converged() && relative_difference(u, u_exact) < 1e-8 &&
-              report.kkt.max() < 1e-10;
+            const bool   right  = report.converged() &&
+                               relative_difference(u, u_exact) < 1e-8 &&
+                               report.kkt.max() < 1e-10;
             ++checks;
             if (!right)
               {
@@ -142,14 +144,14 @@ main()
             }
         if (subset.empty())
           continue;
-        const Problem problem = make_problem(A, b, S, lower);
+        const Problem problem    = make_problem(A, b, S, lower);
         const Vector  full_lower = problem.full_lower_bound();
         Vector        u_exact;
         const int     found =
           enumerate_subset(A, b, full_lower, active, subset, u_exact);
-        Counters        counters;
-        ActiveSetSystem system(problem.A, counters);
-        std::vector<char> resolved = active;
+        Counters               counters;
+        ActiveSetSystem        system(problem.A, counters);
+        std::vector<char>      resolved = active;
         const SubsetResolution result =
           resolve_subset(problem, system, subset, resolved, counters);
         // The rest keeps its sides; U takes the answer's.
@@ -157,10 +159,9 @@ main()
         for (Index i = 0; i < n; ++i)
           if (std::find(subset.begin(), subset.end(), i) == subset.end())
             rest_kept = rest_kept && resolved[i] == active[i];
-        const Vector u = equality_solution(A, b, resolved, full_lower);
-        const bool   right = found >= 1 &&
-                           result == SubsetResolution::resolved && rest_kept &&
-                           relative_difference(u, u_exact) < 1e-10;
+        const Vector u   = equality_solution(A, b, resolved, full_lower);
+        const bool right = found >= 1 && result == SubsetResolution::resolved &&
+                           rest_kept && relative_difference(u, u_exact) < 1e-10;
         ++subset_checks;
         subset_right += right;
         if (!right)
@@ -181,11 +182,11 @@ main()
     ActiveSetSystem   system(problem.A, counters);
     std::vector<char> active = {0, 0};
     std::cout << "resolve_subset, body pulled off its support: no solution: "
-              << yes_no(resolve_subset(problem, system, {0}, active,
-                                       counters) ==
-                        SubsetResolution::no_solution)
+              << yes_no(
+                   resolve_subset(problem, system, {0}, active, counters) ==
+                   SubsetResolution::no_solution)
               << "\n";
-    DenseMatrix two_bodies = DenseMatrix::Zero(4, 4);
+    DenseMatrix two_bodies       = DenseMatrix::Zero(4, 4);
     two_bodies.block(0, 0, 2, 2) = A;
     two_bodies.block(2, 2, 2, 2) = A;
     Vector load(4);
@@ -194,8 +195,9 @@ main()
     ActiveSetSystem   loose_system(loose.A, counters);
     std::vector<char> loose_active(4, 0);
     std::cout << "resolve_subset, a body no constraint holds: singular: "
-              << yes_no(resolve_subset(loose, loose_system, {0}, loose_active,
-                                       counters) == SubsetResolution::singular)
+              << yes_no(resolve_subset(
+                          loose, loose_system, {0}, loose_active, counters) ==
+                        SubsetResolution::singular)
               << "\n";
   }
   std::cout << "resolve_subset: " << subset_right << " of " << subset_checks

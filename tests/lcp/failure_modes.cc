@@ -1,9 +1,9 @@
 // Every failure mode is reported, never hidden: iteration limits, an LCP
 // without solution (Graves proves it), singular reduced systems, and bad
 // input, which must give one line naming the problem and a nonzero exit code.
-#include "../lcp_test_tools.h"
-
 #include <unilateral/application.h>
+
+#include "../lcp_test_tools.h"
 
 #include <fstream>
 #include <sstream>
@@ -57,16 +57,18 @@ namespace
     for (auto &argument : storage)
       argv.push_back(argument.data());
     std::ostringstream out, err;
-    const int code = unilateral::run_application(
-      static_cast<int>(argv.size()), argv.data(), out, err);
+    const int code = unilateral::run_application(static_cast<int>(argv.size()),
+                                                 argv.data(),
+                                                 out,
+                                                 err);
     const std::string message = err.str();
-    const auto lines = std::count(message.begin(), message.end(), '\n');
+    const auto        lines = std::count(message.begin(), message.end(), '\n');
     if (code == 0)
       std::cout << what << ": exit code 0, error output empty: "
                 << yes_no(message.empty()) << "\n";
     else
-      std::cout << what << ": exit code " << code << ", one line: "
-                << yes_no(lines == 1) << "\n  " << message;
+      std::cout << what << ": exit code " << code
+                << ", one line: " << yes_no(lines == 1) << "\n  " << message;
   }
 
   void
@@ -79,10 +81,11 @@ namespace
           "set Scene = lcp\n"
           "subsection Output\n  set Directory = results\n"
           "  set Print timings = false\n  set Progress = false\nend\n"
-          "subsection LCP\n  set Matrix file = " + matrix +
-            "\n  set Right-hand side file = " + rhs +
+          "subsection LCP\n  set Matrix file = " +
+            matrix + "\n  set Right-hand side file = " + rhs +
             "\n  set Constraints file = c.txt\nend\n"
-            "subsection Solver\n" + solver_lines + "end\n");
+            "subsection Solver\n" +
+            solver_lines + "end\n");
   }
 } // namespace
 
@@ -103,10 +106,10 @@ main()
                   solve_with(problem, method("pdas"), u, -1, plain_pdas));
     report_solver("psor limited to 2 sweeps",
                   solve_with(problem, method("psor"), u, -1, parameters));
-    report_solver("block_pivoting limited to 2 iterations",
-                  solve_with(problem, method("block_pivoting"), u, -1, parameters));
-    report_solver("pdas without limit",
-                  solve_with(problem, method("pdas"), u));
+    report_solver(
+      "block_pivoting limited to 2 iterations",
+      solve_with(problem, method("block_pivoting"), u, -1, parameters));
+    report_solver("pdas without limit", solve_with(problem, method("pdas"), u));
   }
 
   // LCPs without a solution: Graves says so.
@@ -117,13 +120,16 @@ main()
     b << 1; // lambda = -1 whatever u is
     Vector u;
     report_solver("graves, A = 0, b = 1",
-                  solve_with(make_problem(A, b, {0}, {0}), method("graves"), u));
+                  solve_with(make_problem(A, b, {0}, {0}),
+                             method("graves"),
+                             u));
     DenseMatrix A2(2, 2);
     A2 << 1, -1, -1, 1;
     Vector b2(2);
     b2 << 1, 1; // lambda_1 + lambda_2 = -2 < 0 always
     report_solver("graves, lambda_1 + lambda_2 = -2",
-                  solve_with(make_problem(A2, b2, {0, 1}, {0, 0}), method("graves"),
+                  solve_with(make_problem(A2, b2, {0, 1}, {0, 0}),
+                             method("graves"),
                              u));
   }
 
@@ -148,8 +154,9 @@ main()
     // it: every system is singular and PDAS says so.
     Vector b_off(2);
     b_off << 1, 0;
-    report_solver("pdas, unregularised, floating body pulled off",
-                  solve_with(make_problem(A, b_off, {0}, {0}), method("pdas"), u, 0));
+    report_solver(
+      "pdas, unregularised, floating body pulled off",
+      solve_with(make_problem(A, b_off, {0}, {0}), method("pdas"), u, 0));
     // With regularisation and the projection one of the family is found,
     // and certified.
     const Report regularised =
@@ -163,7 +170,9 @@ main()
     Vector b2(2);
     b2 << 1, 1;
     report_solver("Schur complement with A_EE = 0",
-                  solve_with(make_problem(A2, b2, {0}, {0}), {&SolverRegistry::get("pdas"), true}, u));
+                  solve_with(make_problem(A2, b2, {0}, {0}),
+                             {&SolverRegistry::get("pdas"), true},
+                             u));
   }
 
   // Bad input through the application.
@@ -191,14 +200,18 @@ main()
   run("NaN in A", {"nan_matrix.prm"});
   write_lcp_prm("nan_rhs", "A.mtx", "b_nan.txt");
   run("NaN in b", {"nan_rhs.prm"});
-  write_lcp_prm("negative_eps", "A.mtx", "b.txt",
+  write_lcp_prm("negative_eps",
+                "A.mtx",
+                "b.txt",
                 "  set Regularisation = -1e-3\n");
   run("eps < 0", {"negative_eps.prm"});
   write_lcp_prm("unreadable", "missing.mtx", "b.txt");
   run("unreadable matrix file", {"unreadable.prm"});
   write_lcp_prm("unknown_method", "A.mtx", "b.txt", "  set Method = lemke\n");
   run("unknown method", {"unknown_method.prm"});
-  write_lcp_prm("dense_too_large", "A.mtx", "b.txt",
+  write_lcp_prm("dense_too_large",
+                "A.mtx",
+                "b.txt",
                 "  set Method = graves\n  set Maximum dense size = 1\n");
   run("graves beyond the dense limit", {"dense_too_large.prm"});
   write("typo.prm", "set Scene = lcp\nset Sceen = lcp\n");

@@ -4,10 +4,10 @@
 // "A(1,0) - A(0,1)", "constrained index 2 is outside 0..1", and index
 // errors named no file). check_and_normalise on a problem built in code
 // counts from 1 as well and says so.
-#include "../application_test_tools.h"
-
 #include <unilateral/base/input_error.h>
 #include <unilateral/lcp/problem.h>
+
+#include "../application_test_tools.h"
 
 using namespace application_test;
 
@@ -61,15 +61,16 @@ main()
   expect_error("constrained index 2 twice",
                run_lcp("twice", spd, "1\n1\n", "2 0\n1 0\n2 0.5\n"),
                {"twice_c.txt:3:", "index 2", "line 1"});
-  expect_error(
-    "non-symmetric A",
-    run_lcp("unsymmetric",
-            "%%MatrixMarket matrix coordinate real general\n2 2 3\n"
-            "1 1 2\n2 1 -1\n2 2 2\n",
-            "1\n1\n",
-            "1 0\n"),
-    {"unsymmetric_A.mtx", "row 2, column 1", "row 1, column 2",
-     "counted from 1"});
+  expect_error("non-symmetric A",
+               run_lcp("unsymmetric",
+                       "%%MatrixMarket matrix coordinate real general\n2 2 3\n"
+                       "1 1 2\n2 1 -1\n2 2 2\n",
+                       "1\n1\n",
+                       "1 0\n"),
+               {"unsymmetric_A.mtx",
+                "row 2, column 1",
+                "row 1, column 2",
+                "counted from 1"});
   expect_error("negative diagonal",
                run_lcp("negative",
                        "%%MatrixMarket matrix coordinate real symmetric\n"
@@ -86,9 +87,9 @@ main()
   problem.A.resize(2, 2);
   problem.A.insert(0, 0) = 1;
   problem.A.insert(1, 1) = 1;
-  problem.b           = unilateral::lcp::Vector::Zero(2);
-  problem.constrained = {1, 1};
-  problem.lower_bound = unilateral::lcp::Vector::Zero(2);
+  problem.b              = unilateral::lcp::Vector::Zero(2);
+  problem.constrained    = {1, 1};
+  problem.lower_bound    = unilateral::lcp::Vector::Zero(2);
   std::cout << "  " << check(problem) << "\n";
   problem.constrained = {0, 2};
   std::cout << "  " << check(problem) << "\n";

@@ -20,48 +20,68 @@ main()
 {
   std::vector<HandProblem> problems;
   {
-    HandProblem p{"two unknowns, one contact", DenseMatrix(2, 2), {0, 1}, {0, 0},
-                  Vector(2), Vector(2)};
+    HandProblem p{"two unknowns, one contact",
+                  DenseMatrix(2, 2),
+                  {0, 1},
+                  {0, 0},
+                  Vector(2),
+                  Vector(2)};
     p.A << 2, -1, -1, 2;
     p.u_star << 0.5, 0;
     p.lambda_star << 0, 1.5;
     problems.push_back(p);
   }
   {
-    HandProblem p{"mixed, nonzero bounds", DenseMatrix(3, 3), {0, 2}, {1, -1},
-                  Vector(3), Vector(3)};
+    HandProblem p{"mixed, nonzero bounds",
+                  DenseMatrix(3, 3),
+                  {0, 2},
+                  {1, -1},
+                  Vector(3),
+                  Vector(3)};
     p.A << 4, -1, 0, -1, 4, -1, 0, -1, 4;
     p.u_star << 1, 0.5, 0;
     p.lambda_star << 2, 0, 0;
     problems.push_back(p);
   }
   {
-    HandProblem p{"one unknown below its bound", DenseMatrix(1, 1), {0}, {-1},
-                  Vector(1), Vector(1)};
+    HandProblem p{"one unknown below its bound",
+                  DenseMatrix(1, 1),
+                  {0},
+                  {-1},
+                  Vector(1),
+                  Vector(1)};
     p.A << 2;
     p.u_star << -1;
     p.lambda_star << 2;
     problems.push_back(p);
   }
   {
-    HandProblem p{"degenerate (at bound, zero multiplier)", DenseMatrix(2, 2),
-                  {0, 1}, {0, 0}, Vector(2), Vector(2)};
+    HandProblem p{"degenerate (at bound, zero multiplier)",
+                  DenseMatrix(2, 2),
+                  {0, 1},
+                  {0, 0},
+                  Vector(2),
+                  Vector(2)};
     p.A << 1, 0, 0, 1;
     p.u_star << 0, 1;
     p.lambda_star << 0, 0;
     problems.push_back(p);
   }
   {
-    HandProblem p{"no contact", DenseMatrix(2, 2), {0, 1}, {0, 0}, Vector(2),
-                  Vector(2)};
+    HandProblem p{
+      "no contact", DenseMatrix(2, 2), {0, 1}, {0, 0}, Vector(2), Vector(2)};
     p.A << 2, 0, 0, 2;
     p.u_star << 1, 1;
     p.lambda_star << 0, 0;
     problems.push_back(p);
   }
   {
-    HandProblem p{"all in contact", DenseMatrix(2, 2), {0, 1}, {0, 0},
-                  Vector(2), Vector(2)};
+    HandProblem p{"all in contact",
+                  DenseMatrix(2, 2),
+                  {0, 1},
+                  {0, 0},
+                  Vector(2),
+                  Vector(2)};
     p.A << 2, -1, -1, 2;
     p.u_star << 0, 0;
     p.lambda_star << 2, 1;
@@ -71,8 +91,12 @@ main()
     // A block on a floor under gravity, hanging a free mass by a spring: A is
     // singular (rigid translation), the solution is unique. Methods that need
     // a definite matrix get A + eps I and the projection step.
-    HandProblem p{"semidefinite (floating body)", DenseMatrix(2, 2), {0}, {0},
-                  Vector(2), Vector(2)};
+    HandProblem p{"semidefinite (floating body)",
+                  DenseMatrix(2, 2),
+                  {0},
+                  {0},
+                  Vector(2),
+                  Vector(2)};
     p.A << 1, -1, -1, 1;
     p.u_star << 0, -1;
     p.lambda_star << 2, 0;
@@ -82,7 +106,7 @@ main()
 
   for (const auto &p : problems)
     {
-      const Vector b = p.A * p.u_star - p.lambda_star;
+      const Vector  b       = p.A * p.u_star - p.lambda_star;
       const Problem problem = make_problem(p.A, b, p.S, p.lower);
       std::cout << p.name << " (n = " << problem.size()
                 << ", |S| = " << problem.n_constrained() << ")\n";
@@ -97,9 +121,9 @@ main()
                     << to_string(report.status) << ", u exact: "
                     << yes_no(relative_difference(u, p.u_star) < 1e-10)
                     << ", lambda exact: "
-                    << yes_no((lambda - p.lambda_star)
-                                .lpNorm<Eigen::Infinity>() <
-                              1e-10 * (1 + p.lambda_star.lpNorm<Eigen::Infinity>()))
+                    << yes_no(
+                         (lambda - p.lambda_star).lpNorm<Eigen::Infinity>() <
+                         1e-10 * (1 + p.lambda_star.lpNorm<Eigen::Infinity>()))
                     << "\n";
         }
     }

@@ -47,10 +47,10 @@ main()
                run_lcp("two_of_three", header + "2 2 3\n1 1 2\n2 2 2\n"),
                {"two_of_three.mtx:", "2 of 3 entries"});
 
-  const Result trailing = run_lcp(
-    "trailing_comments", header + "2 2 3\n1 1 2\n2 1 -1\n2 2 2\n% end\n\n");
+  const Result trailing =
+    run_lcp("trailing_comments",
+            header + "2 2 3\n1 1 2\n2 1 -1\n2 2 2\n% end\n\n");
   std::cout << "exactly the announced entries, then comments: exit code 0: "
             << yes_no(trailing.code == 0)
-            << ", error output empty: " << yes_no(trailing.err.empty())
-            << "\n";
+            << ", error output empty: " << yes_no(trailing.err.empty()) << "\n";
 }

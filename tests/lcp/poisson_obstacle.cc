@@ -31,23 +31,24 @@ main()
   dealii::GridGenerator::hyper_cube(triangulation);
   triangulation.refine_global(7);
   const dealii::FE_Q<2> fe(1);
-  DoFHandler<2>   dof_handler(triangulation);
+  DoFHandler<2>         dof_handler(triangulation);
   dof_handler.distribute_dofs(fe);
 
   dealii::DynamicSparsityPattern pattern(dof_handler.n_dofs());
   DoFTools::make_sparsity_pattern(dof_handler, pattern);
   dealii::SparsityPattern sparsity;
   sparsity.copy_from(pattern);
-  dealii::SparseMatrix<double> laplace(sparsity);
-  dealii::Vector<double>       load(dof_handler.n_dofs());
+  dealii::SparseMatrix<double>                 laplace(sparsity);
+  dealii::Vector<double>                       load(dof_handler.n_dofs());
   const dealii::Functions::ConstantFunction<2> f(-6.0);
   dealii::MatrixCreator::create_laplace_matrix(
     dof_handler, dealii::QGauss<2>(2), laplace, f, load);
 
   // The LCP on the interior nodes; psi a bowl below the membrane, so the
   // contact set is a central disc (about 31 % of the nodes for f = -6).
-  const dealii::IndexSet boundary = DoFTools::extract_boundary_dofs(dof_handler);
-  std::vector<Point<2>>  support(dof_handler.n_dofs());
+  const dealii::IndexSet boundary =
+    DoFTools::extract_boundary_dofs(dof_handler);
+  std::vector<Point<2>> support(dof_handler.n_dofs());
   DoFTools::map_dofs_to_support_points(dealii::MappingQ1<2>(),
                                        dof_handler,
                                        support);
@@ -57,7 +58,7 @@ main()
     if (!boundary.is_element(i))
       number[i] = n++;
 
-  Problem problem;
+  Problem                                    problem;
   std::vector<Eigen::Triplet<double, Index>> entries;
   for (dealii::types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
     if (number[i] >= 0)
@@ -71,19 +72,20 @@ main()
   for (dealii::types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
     if (number[i] >= 0)
       {
-        const Point<2> &x = support[i];
+        const Point<2> &x    = support[i];
         problem.b[number[i]] = load[i];
         problem.constrained.push_back(number[i]);
         problem.lower_bound[number[i]] =
-          -0.1 - 0.2 * ((x[0] - 0.5) * (x[0] - 0.5) + (x[1] - 0.5) * (x[1] - 0.5));
+          -0.1 -
+          0.2 * ((x[0] - 0.5) * (x[0] - 0.5) + (x[1] - 0.5) * (x[1] - 0.5));
       }
   check_and_normalise(problem);
-  std::cout << "unknowns: " << problem.size() << " (>= 10^4: "
-            << yes_no(problem.size() >= 10000) << ")\n";
+  std::cout << "unknowns: " << problem.size()
+            << " (>= 10^4: " << yes_no(problem.size() >= 10000) << ")\n";
 
   // The reference: PDAS, certified by its own KKT residuals.
   Vector       reference;
-  const Report pdas = solve_with(problem, {&default_method()}, reference);
+  const Report pdas     = solve_with(problem, {&default_method()}, reference);
   const double fraction = double(pdas.n_active) / problem.size();
   std::cout << "pdas: " << to_string(pdas.status)
             << ", KKT <= 1e-10: " << yes_no(pdas.kkt.max() <= 1e-10)
@@ -125,9 +127,8 @@ main()
       Vector       u;
       const Report report = solve_with(problem, run.method, u, -1, parameters);
       std::cout << "  " << std::setw(38) << std::left << run.method.label()
-                << std::setw(13) << run.label
-                << to_string(report.status) << ", agrees with pdas to "
-                << run.tolerance << ": "
+                << std::setw(13) << run.label << to_string(report.status)
+                << ", agrees with pdas to " << run.tolerance << ": "
                 << yes_no(relative_difference(u, reference) < run.tolerance);
       if (run.tolerance < 1e-4)
         std::cout << ", KKT <= 1e-10: " << yes_no(report.kkt.max() <= 1e-10)

@@ -2,10 +2,10 @@
 // a factorisation is reused while its matrix does not change, the projection
 // step reuses the regularised factor, one ordering/analysis serves a whole
 // run, and optional phases run only when asked for.
-#include "../lcp_test_tools.h"
-
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/sparse_cholesky.h>
+
+#include "../lcp_test_tools.h"
 
 #include <array>
 
@@ -19,7 +19,7 @@ namespace
   laplacian_3d(const Index k)
   {
     std::vector<Eigen::Triplet<double>> entries;
-    const auto index = [k](Index i, Index j, Index l) {
+    const auto                          index = [k](Index i, Index j, Index l) {
       return (i * k + j) * k + l;
     };
     for (Index i = 0; i < k; ++i)
@@ -144,9 +144,9 @@ main()
       const SparseMatrix A = laplacian(grid);
       const Index        n = A.rows();
       const Vector       b = smooth_load(n);
-      Counters          counters;
-      SparseCholesky    updated;
-      std::vector<char> fixed(n, 0);
+      Counters           counters;
+      SparseCholesky     updated;
+      std::vector<char>  fixed(n, 0);
       updated.factorise(A, counters);
       const auto agrees_with_fresh = [&]() {
         SparseCholesky fresh;
@@ -213,13 +213,11 @@ main()
                 << ", "
                 << (tried.factorisation_flops() < amd.factorisation_flops() ?
                       "fewer flops than AMD" :
-                      tried.factorisation_flops() ==
-                          amd.factorisation_flops() ?
+                    tried.factorisation_flops() == amd.factorisation_flops() ?
                       "AMD's flops" :
                       "more flops than AMD (wrong)")
                 << ", solves as AMD's factor: "
-                << yes_no(relative_difference(x_tried, x_amd) < 1e-12)
-                << "\n";
+                << yes_no(relative_difference(x_tried, x_amd) < 1e-12) << "\n";
     };
     compare(laplacian_3d(25), "laplacian_3d(25)");
     compare(laplacian(120), "laplacian(120)");
@@ -261,8 +259,8 @@ main()
   // three entries each, so three blocks of 32 and the products between
   // them.
   {
-    const SparseMatrix A = laplacian(120);
-    const Index        n = A.rows();
+    const SparseMatrix                  A = laplacian(120);
+    const Index                         n = A.rows();
     std::vector<Eigen::Triplet<double>> entries;
     for (Index c = 0; c < 70; ++c)
       {
@@ -321,9 +319,9 @@ main()
     const SparseMatrix A = laplacian(40);
     const Index        n = A.rows();
     const Vector       b = smooth_load(n);
-    Counters        system_counters;
-    ActiveSetSystem system(A, system_counters);
-    std::vector<char> X(n, 0);
+    Counters           system_counters;
+    ActiveSetSystem    system(A, system_counters);
+    std::vector<char>  X(n, 0);
     for (Index i = 0; i < n; i += 7)
       X[i] = 1;
     Vector x = Vector::Zero(n);
@@ -353,40 +351,39 @@ main()
     // on a 2D one (few flops per entry) three changes are factorised anew.
     // The first third of the unknowns is fixed, so A_FF is factorised on
     // its own and never updated row by row.
-    const auto nearby_set = [](const SparseMatrix &A,
-                               const unsigned int  changes,
-                               const char         *name) {
-      const Index       n = A.rows();
-      const Vector      b = smooth_load(n);
-      Counters          counters;
-      ActiveSetSystem   system(A, counters);
-      std::vector<char> X(n, 0);
-      for (Index i = 0; i < n / 3; ++i)
-        X[i] = 1;
-      Vector x = Vector::Zero(n);
-      system.solve(X, b, x);
-      // Free the last fixed indices and fix the first free one.
-      for (unsigned int c = 0; c + 1 < changes; ++c)
-        X[n / 3 - 1 - c] = 0;
-      X[n / 3] = 1;
-      x        = Vector::Zero(n);
-      system.solve(X, b, x);
-      Counters        fresh_counters;
-      ActiveSetSystem fresh(A, fresh_counters);
-      Vector          x_fresh = Vector::Zero(n);
-      fresh.solve(X, b, x_fresh);
-      std::cout << name << ", " << changes << " change(s): "
-                << (counters.reused_factorisations == 1 &&
-                        counters.numeric_factorisations == 1 ?
-                      "CG with the nearby factor" :
-                    counters.reused_factorisations == 0 &&
-                        counters.numeric_factorisations == 2 &&
-                        counters.cg_iterations == 0 ?
-                      "factorised anew, no CG tried" :
-                      "CG tried, then factorised")
-                << ", same answer: "
-                << yes_no(relative_difference(x, x_fresh) < 1e-12) << "\n";
-    };
+    const auto nearby_set =
+      [](const SparseMatrix &A, const unsigned int changes, const char *name) {
+        const Index       n = A.rows();
+        const Vector      b = smooth_load(n);
+        Counters          counters;
+        ActiveSetSystem   system(A, counters);
+        std::vector<char> X(n, 0);
+        for (Index i = 0; i < n / 3; ++i)
+          X[i] = 1;
+        Vector x = Vector::Zero(n);
+        system.solve(X, b, x);
+        // Free the last fixed indices and fix the first free one.
+        for (unsigned int c = 0; c + 1 < changes; ++c)
+          X[n / 3 - 1 - c] = 0;
+        X[n / 3] = 1;
+        x        = Vector::Zero(n);
+        system.solve(X, b, x);
+        Counters        fresh_counters;
+        ActiveSetSystem fresh(A, fresh_counters);
+        Vector          x_fresh = Vector::Zero(n);
+        fresh.solve(X, b, x_fresh);
+        std::cout << name << ", " << changes << " change(s): "
+                  << (counters.reused_factorisations == 1 &&
+                          counters.numeric_factorisations == 1 ?
+                        "CG with the nearby factor" :
+                      counters.reused_factorisations == 0 &&
+                          counters.numeric_factorisations == 2 &&
+                          counters.cg_iterations == 0 ?
+                        "factorised anew, no CG tried" :
+                        "CG tried, then factorised")
+                  << ", same answer: "
+                  << yes_no(relative_difference(x, x_fresh) < 1e-12) << "\n";
+      };
     nearby_set(laplacian_3d(25), 1, "laplacian_3d(25)");
     nearby_set(laplacian(120), 3, "laplacian(120)");
   }
@@ -412,8 +409,7 @@ main()
     later.solve(X, b, x);
     std::cout << "a later system on the same A: factorised again: "
               << yes_no(counters.numeric_factorisations == 2)
-              << ", ordered once: " << yes_no(counters.orderings == 1)
-              << "\n";
+              << ", ordered once: " << yes_no(counters.orderings == 1) << "\n";
   }
 
   const Problem problem = chain(60);
@@ -423,7 +419,8 @@ main()
   {
     SolverParameters no_projection;
     no_projection.projection = false;
-    const Report psor = solve_with(problem, method("psor"), u, 1e-2, no_projection);
+    const Report psor =
+      solve_with(problem, method("psor"), u, 1e-2, no_projection);
     // Regularised and not projected, so the answer is honestly reported
     // "inaccurate" against the original problem.
     std::cout << "psor: " << to_string(psor.status)
@@ -476,7 +473,10 @@ main()
         parameters.set("PDAS/Safeguard", std::to_string(safeguard));
         const Report report =
           solve_with(make_problem(two_bodies, load, {0, 2}, {0, 0}),
-                     method("pdas"), u, -1, parameters);
+                     method("pdas"),
+                     u,
+                     -1,
+                     parameters);
         std::cout << "pdas" << (safeguard == 0 ? " without safeguards" : "")
                   << ", eps = auto, singular A: " << to_string(report.status)
                   << ", regularised after all: "
@@ -530,7 +530,7 @@ main()
       &SolverRegistry::get("interior_point"),
       false,
       &SolverRegistry::get("interior_point").variants.front()};
-    Vector       exact_u, mehrotra_u, gondzio_u;
+    Vector exact_u, mehrotra_u, gondzio_u;
     solve_with(obstacle, method("pdas"), exact_u, 0);
     const Report mehrotra =
       solve_with(obstacle, predictor_corrector, mehrotra_u, 0, parameters);
@@ -555,7 +555,7 @@ main()
               << " iterations, one factorisation each and one for the "
                  "start: "
               << yes_no(gondzio.counters.numeric_factorisations ==
-                          gondzio.iterations + 1)
+                        gondzio.iterations + 1)
               << ", correctors kept: " << yes_no(kept > 0)
               << ", one solve per corrector tried: "
               << yes_no(tried >= kept &&
@@ -569,7 +569,8 @@ main()
   // Optional phases run only when asked for.
   {
     const Report full = solve_with(problem, method("pdas"), u, 1e-12);
-    const Report schur = solve_with(problem, {&SolverRegistry::get("pdas"), true}, u, 1e-12);
+    const Report schur =
+      solve_with(problem, {&SolverRegistry::get("pdas"), true}, u, 1e-12);
     std::cout << "Schur complement formed only when asked: "
               << yes_no(!has_phase(full, "schur complement") &&
                         has_phase(schur, "schur complement"))
@@ -582,10 +583,12 @@ main()
               << yes_no(full.projected && !unprojected.projected &&
                         !has_phase(unprojected, "projection"))
               << "\n";
-    const Report definite = solve_with(
-      make_problem(DenseMatrix::Identity(3, 3), Vector::Ones(3), {0, 1, 2},
-                   {0, 0, 0}),
-      method("pdas"), u);
+    const Report definite = solve_with(make_problem(DenseMatrix::Identity(3, 3),
+                                                    Vector::Ones(3),
+                                                    {0, 1, 2},
+                                                    {0, 0, 0}),
+                                       method("pdas"),
+                                       u);
     std::cout << "no regularisation or projection for a definite matrix "
                  "with eps = auto: "
               << yes_no(definite.regularisation == 0 && !definite.projected)

@@ -10,9 +10,9 @@
 //     converged;
 //  4. an indefinite A is refused before any answer (it was solved: pdas gave
 //     u = (1/3, 1/3), graves (0, 1)).
-#include "../lcp_test_tools.h"
-
 #include <unilateral/base/input_error.h>
+
+#include "../lcp_test_tools.h"
 
 #include <limits>
 
@@ -71,8 +71,7 @@ main()
     every_method("coupled, bound 0.5 above: converged, u = (0.5, 0.25)",
                  problem,
                  [](const Report &report, const Vector &u) {
-                   return report.converged() &&
-                          std::abs(u[0] - 0.5) < 1e-12 &&
+                   return report.converged() && std::abs(u[0] - 0.5) < 1e-12 &&
                           std::abs(u[1] - 0.25) < 1e-12;
                  });
   }
@@ -85,15 +84,14 @@ main()
     A << 1e4, -1e4, -1e4, 1e4;
     Vector b(2);
     b << 0, -1e-12;
-    Problem problem     = make_problem(A, b, {0}, {-1.0});
+    Problem problem         = make_problem(A, b, {0}, {-1.0});
     problem.floating_bodies = true;
     every_method("a block settling by a gap 1e16 times its deformation: "
                  "converged only onto its support",
                  problem,
                  [](const Report &report, const Vector &u) {
-                   return !report.converged() ||
-                          (std::abs(u[0] + 1) < 1e-12 &&
-                           std::abs(u[1] + 1) < 1e-12);
+                   return !report.converged() || (std::abs(u[0] + 1) < 1e-12 &&
+                                                  std::abs(u[1] + 1) < 1e-12);
                  });
   }
 

@@ -10,9 +10,9 @@
 //  3. Errors: overlapping blocks, non-matching nodes on a shared edge, and
 //     dependent constraint rows (a cycle, a second support) are reported
 //     as one line.
-#include "masonry_test_tools.h"
-
 #include <unilateral/base/input_error.h>
+
+#include "masonry_test_tools.h"
 
 #include <cmath>
 #include <random>

@@ -71,8 +71,8 @@ namespace
   {
     const std::string prm = "subsection Masonry\n  set Geometry = " + geometry +
                             "\n  set Blocks per side = " + std::to_string(m) +
-                            "\nend\nsubsection Solver\n" +
-                            method.prm_lines() + "end\n";
+                            "\nend\nsubsection Solver\n" + method.prm_lines() +
+                            "end\n";
     const Setup setup = parse(prm);
     return run(setup, "solvers");
   }
@@ -82,7 +82,7 @@ int
 main()
 {
   const std::vector<Method> methods = all_methods();
-  const Method reference_method{&lcp::default_method(), false};
+  const Method              reference_method{&lcp::default_method(), false};
   for (const std::string geometry : {"stack bond", "running bond", "laminae"})
     for (const unsigned int m : {5u, 10u, 20u})
       {
@@ -131,8 +131,8 @@ main()
             std::cout << "  " << method.label() << ": KKT <= 1e-10: "
                       << yes_no(result.report.kkt.max() <= 1e-10)
                       << ", u = " << reference_method.info->name << ": "
-                      << yes_no(difference <= 1e-8 * scale) << ", energy = "
-                      << reference_method.info->name << ": "
+                      << yes_no(difference <= 1e-8 * scale)
+                      << ", energy = " << reference_method.info->name << ": "
                       << yes_no(energy_difference <=
                                 1e-10 * std::abs(reference.report.energy))
                       << "\n";

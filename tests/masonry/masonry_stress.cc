@@ -56,12 +56,13 @@ namespace
                const std::string &more_solver = "")
   {
     std::ostringstream prm;
-    prm << std::setprecision(17) << "subsection Masonry\n  set Geometry = "
-        << geometry << "\n  set Blocks per side = 5\n"
+    prm << std::setprecision(17)
+        << "subsection Masonry\n  set Geometry = " << geometry
+        << "\n  set Blocks per side = 5\n"
         << "  subsection Boundary conditions\n    set Gravity = " << k
         << "\n  end\n  subsection Materials\n    set Young's modulus = "
-        << 4e3 * k << "\n  end\nend\nsubsection Solver\n  set Method = "
-        << method << "\n"
+        << 4e3 * k
+        << "\n  end\nend\nsubsection Solver\n  set Method = " << method << "\n"
         << more_solver << "end\n";
     return run(parse(prm.str()), "stress");
   }
@@ -84,8 +85,9 @@ namespace
     double result = 0;
     for (std::size_t i = 0; i < u.size(); ++i)
       for (unsigned int d = 0; d < 2; ++d)
-        result = std::max(result,
-                          std::abs(u[i].displacement[d] - v[i].displacement[d]));
+        result =
+          std::max(result,
+                   std::abs(u[i].displacement[d] - v[i].displacement[d]));
     return result;
   }
 
@@ -97,19 +99,20 @@ namespace
       for (const std::string method :
            {"pdas", "pdpc", "interior_point", "block_pivoting", "lssnn"})
         {
-          const Run  reference   = solve_scaled(geometry, method, 1.0);
-          const auto reference_u = reference.scene->nodal_displacements();
-          const double scale     = largest(reference_u);
-          std::cout << "  " << geometry << ", " << method << " (k = 1: "
-                    << lcp::to_string(reference.report.status) << ")\n";
+          const Run    reference   = solve_scaled(geometry, method, 1.0);
+          const auto   reference_u = reference.scene->nodal_displacements();
+          const double scale       = largest(reference_u);
+          std::cout << "  " << geometry << ", " << method
+                    << " (k = 1: " << lcp::to_string(reference.report.status)
+                    << ")\n";
           for (const double k : {1e-6, 1e-3, 1e3, 1e6})
             {
-              const Run result = solve_scaled(geometry, method, k);
+              const Run  result = solve_scaled(geometry, method, k);
               const bool same_status =
                 result.report.status == reference.report.status;
               const bool same_u =
-                difference(result.scene->nodal_displacements(),
-                           reference_u) <= 1e-8 * scale;
+                difference(result.scene->nodal_displacements(), reference_u) <=
+                1e-8 * scale;
               const bool energy =
                 std::abs(result.report.energy - k * reference.report.energy) <=
                 1e-10 * std::abs(k * reference.report.energy);
@@ -133,8 +136,10 @@ namespace
     // load -1 on the top. Solution u = (0, -1/4), lambda_0 = 1.
     lcp::Problem problem;
     problem.A.resize(2, 2);
-    std::vector<Eigen::Triplet<double, lcp::Index>> entries = {
-      {0, 0, 4.0}, {0, 1, -4.0}, {1, 0, -4.0}, {1, 1, 4.0}};
+    std::vector<Eigen::Triplet<double, lcp::Index>> entries = {{0, 0, 4.0},
+                                                               {0, 1, -4.0},
+                                                               {1, 0, -4.0},
+                                                               {1, 1, 4.0}};
     problem.A.setFromTriplets(entries.begin(), entries.end());
     problem.b           = lcp::Vector::Zero(2);
     problem.b[1]        = -1;
@@ -153,22 +158,22 @@ namespace
         report.kkt    = lcp::kkt_residuals(problem, solution.u);
         lcp::check_work(problem, solution, report);
         std::cout << "  u = (" << drift << ", " << drift << " - 1/4): "
-                  << "relative KKT <= 1e-8: " << yes_no(report.kkt.max() <= 1e-8)
-                  << ", status " << lcp::to_string(report.status) << "\n";
+                  << "relative KKT <= 1e-8: "
+                  << yes_no(report.kkt.max() <= 1e-8) << ", status "
+                  << lcp::to_string(report.status) << "\n";
       }
   }
 
   void
   work_check_on_the_wall()
   {
-    const Run  reference = solve_scaled("stack bond", "lssnn", 1.0);
+    const Run  reference   = solve_scaled("stack bond", "lssnn", 1.0);
     const auto reference_u = reference.scene->nodal_displacements();
-    const Run  result =
-      solve_scaled("stack bond",
-                   "block_pivoting",
-                   1.0,
-                   "  set Regularisation = 1e-2\n");
-    const bool right = difference(result.scene->nodal_displacements(),
+    const Run  result      = solve_scaled("stack bond",
+                                    "block_pivoting",
+                                    1.0,
+                                    "  set Regularisation = 1e-2\n");
+    const bool right       = difference(result.scene->nodal_displacements(),
                                   reference_u) <= 1e-8 * largest(reference_u);
     std::cout << "  stack bond, m = 5, block_pivoting, eps = 1e-2: "
               << "reference (lssnn) converged: "
@@ -187,13 +192,13 @@ namespace
                                     "pdas",
                                     1.0,
                                     "  set Regularisation = 1e-8\n"
-                                    "  set Projection = false\n");
-    const bool right = difference(result.scene->nodal_displacements(),
+                                          "  set Projection = false\n");
+    const bool right       = difference(result.scene->nodal_displacements(),
                                   reference_u) <= 1e-8 * largest(reference_u);
     std::cout << "  laminae, m = 5, pdas, eps = 1e-8: reference (lssnn) "
                  "converged: "
-              << yes_no(reference.report.converged())
-              << ", status " << lcp::to_string(result.report.status)
+              << yes_no(reference.report.converged()) << ", status "
+              << lcp::to_string(result.report.status)
               << ", converged only if right: "
               << yes_no(!result.report.converged() || right) << "\n";
   }
@@ -216,8 +221,7 @@ namespace
                            "stress");
     std::cout << "  running bond, m = 5, no load, graves_sc: "
               << lcp::to_string(result.report.status)
-              << ", KKT <= 1e-10: "
-              << yes_no(result.report.kkt.max() <= 1e-10)
+              << ", KKT <= 1e-10: " << yes_no(result.report.kkt.max() <= 1e-10)
               << ", Case 2 claim checked: "
               << yes_no(result.report.message.find("PDAS solved it") !=
                         std::string::npos)
@@ -243,16 +247,13 @@ namespace
     const Run  result      = wall("pdas");
     std::cout << "  running bond, m = 30: pdpc "
               << lcp::to_string(reference.report.status) << ", pdas "
-              << lcp::to_string(result.report.status)
-              << ", cycling noted: "
+              << lcp::to_string(result.report.status) << ", cycling noted: "
               << yes_no(result.report.message.find("cycling") !=
                         std::string::npos)
-              << ", KKT <= 1e-10: "
-              << yes_no(result.report.kkt.max() <= 1e-10)
+              << ", KKT <= 1e-10: " << yes_no(result.report.kkt.max() <= 1e-10)
               << ", u as pdpc's (1e-8): "
               << yes_no(difference(result.scene->nodal_displacements(),
-                                   reference_u) <=
-                        1e-8 * largest(reference_u))
+                                   reference_u) <= 1e-8 * largest(reference_u))
               << "\n";
   }
 } // namespace

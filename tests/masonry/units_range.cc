@@ -57,8 +57,7 @@ main()
   const double base_max = largest(base);
   std::cout << "E = 4e3, density 1: " << lcp::to_string(base.report.status)
             << ", energy " << std::scientific << std::setprecision(6)
-            << base.report.energy << ", max displacement " << base_max
-            << "\n";
+            << base.report.energy << ", max displacement " << base_max << "\n";
 
   std::cout << std::setprecision(0);
   for (const double k : {1e-300, 1e-100, 1e-10, 1e10, 1e100, 1e300})
@@ -90,8 +89,8 @@ main()
   for (const double E : {1e-300, 1e-200})
     {
       const Run result = wall(E, 1);
-      std::cout << "E = " << E << ", density 1: "
-                << lcp::to_string(result.report.status)
+      std::cout << "E = " << E
+                << ", density 1: " << lcp::to_string(result.report.status)
                 << ", converged only with finite figures: "
                 << yes_no(!result.report.converged() ||
                           (std::isfinite(result.report.energy) &&

@@ -15,6 +15,8 @@
 #include <unilateral/scenes/plate/assembly.h>
 #include <unilateral/scenes/plate/bending.h>
 
+#include "../test_tools.h"
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -27,12 +29,10 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
-#include "../test_tools.h"
-
 using namespace dealii;
-using unilateral::fe::BognerFoxSchmit;
 using test_tools::Polynomial;
 using test_tools::verdict;
+using unilateral::fe::BognerFoxSchmit;
 
 namespace
 {
@@ -45,10 +45,10 @@ namespace
   paper_energy_density(const Tensor<2, 2> &hz, const Tensor<2, 2> &hw)
   {
     const double E = youngs_modulus, nu = poisson_ratio, t = thickness;
-    const double kz[3] = {hz[0][0], hz[1][1], 2 * hz[0][1]};
-    const double kw[3] = {hw[0][0], hw[1][1], 2 * hw[0][1]};
+    const double kz[3]   = {hz[0][0], hz[1][1], 2 * hz[0][1]};
+    const double kw[3]   = {hw[0][0], hw[1][1], 2 * hw[0][1]};
     const double D[3][3] = {{1, nu, 0}, {nu, 1, 0}, {0, 0, (1 - nu) / 2}};
-    double       result = 0;
+    double       result  = 0;
     for (unsigned int a = 0; a < 3; ++a)
       for (unsigned int b = 0; b < 3; ++b)
         result += kz[a] * D[a][b] * kw[b];
@@ -68,8 +68,8 @@ namespace
                            quadrature.point(q)[0] * element.size(0),
                          element.vertex(0)[1] +
                            quadrature.point(q)[1] * element.size(1));
-        result += g(x) * quadrature.weight(q) * element.size(0) *
-                  element.size(1);
+        result +=
+          g(x) * quadrature.weight(q) * element.size(0) * element.size(1);
       }
     return result;
   }
@@ -83,19 +83,22 @@ namespace
   void
   check_element()
   {
-    const double rigidity = unilateral::plate::flexural_rigidity(
-      youngs_modulus, poisson_ratio, thickness);
+    const double rigidity = unilateral::plate::flexural_rigidity(youngs_modulus,
+                                                                 poisson_ratio,
+                                                                 thickness);
     const BognerFoxSchmit element(Point<2>(0.4, -0.3), 0.7, 1.9);
-    const unilateral::plate::CellIntegrals integrals(0.7, 1.9, rigidity,
+    const unilateral::plate::CellIntegrals integrals(0.7,
+                                                     1.9,
+                                                     rigidity,
                                                      poisson_ratio);
-    Eigen::MatrixXd K(16, 16);
+    Eigen::MatrixXd                        K(16, 16);
     for (unsigned int i = 0; i < 16; ++i)
       for (unsigned int j = 0; j < 16; ++j)
         K(i, j) = integrals.stiffness(i, j);
 
     verdict("C^e is exactly symmetric", K == K.transpose());
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(K);
-    const Eigen::VectorXd lambda = eigen.eigenvalues(); // ascending
+    const Eigen::VectorXd lambda  = eigen.eigenvalues(); // ascending
     const double          largest = lambda[15];
     unsigned int          n_zero = 0, n_negative = 0;
     for (unsigned int k = 0; k < 16; ++k)
@@ -106,7 +109,8 @@ namespace
     verdict("C^e has no negative eigenvalue", n_negative == 0);
     verdict("C^e has exactly 3 zero eigenvalues (|lambda| <= 1e-12 max)",
             n_zero == 3);
-    verdict("the other 13 eigenvalues are > 1e-6 max", lambda[3] > 1e-6 * largest);
+    verdict("the other 13 eigenvalues are > 1e-6 max",
+            lambda[3] > 1e-6 * largest);
 
     bool rigid_modes = true;
     for (const Polynomial &p : {Polynomial::monomial(0, 0),
@@ -114,12 +118,13 @@ namespace
                                 Polynomial::monomial(0, 1)})
       {
         const Eigen::VectorXd z = to_vector(element.interpolate(p));
-        rigid_modes = rigid_modes && (K * z).norm() <= 1e-12 * largest * z.norm();
+        rigid_modes =
+          rigid_modes && (K * z).norm() <= 1e-12 * largest * z.norm();
       }
     verdict("1, x and y have zero energy (C^e z = 0)", rigid_modes);
     verdict("x^2, xy and y^2 do not",
             (K * to_vector(element.interpolate(Polynomial::monomial(2, 0))))
-                .norm() > 1e-3 * largest &&
+                  .norm() > 1e-3 * largest &&
               (K * to_vector(element.interpolate(Polynomial::monomial(1, 1))))
                   .norm() > 1e-3 * largest &&
               (K * to_vector(element.interpolate(Polynomial::monomial(0, 2))))
@@ -129,23 +134,26 @@ namespace
     double               energy_error = 0, energy_scale = 0;
     for (unsigned int k = 0; k < 8; ++k)
       {
-        const Polynomial p = Polynomial::bicubic(sequence);
-        const Polynomial q = Polynomial::bicubic(sequence);
-        const double     ours = to_vector(element.interpolate(p)).dot(
-          K * to_vector(element.interpolate(q)));
+        const Polynomial p    = Polynomial::bicubic(sequence);
+        const Polynomial q    = Polynomial::bicubic(sequence);
+        const double     ours = to_vector(element.interpolate(p))
+                              .dot(K * to_vector(element.interpolate(q)));
         const double exact = integrate(element, [&](const Point<2> &x) {
           return paper_energy_density(p.full_hessian(x), q.full_hessian(x));
         });
-        energy_error = std::max(energy_error, std::abs(ours - exact));
-        energy_scale = std::max(energy_scale, std::abs(exact));
+        energy_error       = std::max(energy_error, std::abs(ours - exact));
+        energy_scale       = std::max(energy_scale, std::abs(exact));
       }
     verdict("z_p^T C^e z_q equals the paper's energy (27)-(28) for 8 pairs of "
             "random bicubics (relative error < 1e-12)",
             energy_error < 1e-12 * energy_scale);
 
     // Loads: degree 4 in each variable is exact with 4 x 4 Gauss, x^5 is not.
-    const Polynomial quartic(
-      {{1.0, 0.3, 0.0, 0.0, 0.7}, {0.0, 0.2}, {0.0, -1.1}, {0.0}, {-0.5, 0.0, 0.0, 0.0, 0.9}});
+    const Polynomial quartic({{1.0, 0.3, 0.0, 0.0, 0.7},
+                              {0.0, 0.2},
+                              {0.0, -1.1},
+                              {0.0},
+                              {-0.5, 0.0, 0.0, 0.0, 0.9}});
     const Polynomial quintic = Polynomial::monomial(5, 0);
     for (const auto &[name, force, exact_expected] :
          {std::tuple{"a force of degree 4 in x and in y", &quartic, true},
@@ -154,17 +162,19 @@ namespace
         double error = 0, scale = 0;
         for (unsigned int k = 0; k < 4; ++k)
           {
-            const Polynomial p    = Polynomial::bicubic(sequence);
-            const auto       load = integrals.load(
-              element.vertex(0), [&](const Point<2> &x) { return force->value(x); });
+            const Polynomial p = Polynomial::bicubic(sequence);
+            const auto       load =
+              integrals.load(element.vertex(0), [&](const Point<2> &x) {
+                return force->value(x);
+              });
             const double ours =
               Eigen::Map<const Eigen::VectorXd>(load.data(), 16)
                 .dot(to_vector(element.interpolate(p)));
             const double exact = integrate(element, [&](const Point<2> &x) {
               return force->value(x) * p.value(x);
             });
-            error = std::max(error, std::abs(ours - exact));
-            scale = std::max(scale, std::abs(exact));
+            error              = std::max(error, std::abs(ours - exact));
+            scale              = std::max(scale, std::abs(exact));
           }
         verdict(std::string("load F^e . z_p equals int f p for ") + name +
                   (exact_expected ? " (relative error < 1e-12)" :
@@ -202,8 +212,8 @@ namespace
                    const Function<2>   &force,
                    const double         rigidity)
   {
-    const IndexSet fixed = DoFTools::extract_boundary_dofs(
-      dof_handler, ComponentMask(4, true));
+    const IndexSet fixed =
+      DoFTools::extract_boundary_dofs(dof_handler, ComponentMask(4, true));
     const unilateral::plate::FreeDofs free_dofs =
       unilateral::plate::number_free_dofs(dof_handler.n_dofs(), fixed);
 
@@ -234,8 +244,8 @@ namespace
     const Eigen::SimplicialLDLT<unilateral::lcp::SparseMatrix> ldlt(A);
     if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0).any())
       return std::numeric_limits<double>::infinity();
-    const Eigen::VectorXd u = ldlt.solve(b);
-    double error = 0, scale = 0;
+    const Eigen::VectorXd u     = ldlt.solve(b);
+    double                error = 0, scale = 0;
     for (unilateral::lcp::Index k = 0; k < free_dofs.size(); ++k)
       {
         error = std::max(error, std::abs(u[k] - nodal[free_dofs.dof[k]]));
@@ -247,14 +257,15 @@ namespace
   void
   check_patch_test()
   {
-    const double rigidity = unilateral::plate::flexural_rigidity(
-      youngs_modulus, poisson_ratio, thickness);
+    const double rigidity = unilateral::plate::flexural_rigidity(youngs_modulus,
+                                                                 poisson_ratio,
+                                                                 thickness);
     Triangulation<2> triangulation;
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      {{0.5, 1.3, 0.8, 0.6}, {0.9, 0.4, 1.1, 0.7, 0.3}},
-      Point<2>(-1.0, 0.5),
-      Point<2>(2.2, 3.9));
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {{0.5, 1.3, 0.8, 0.6},
+                                               {0.9, 0.4, 1.1, 0.7, 0.3}},
+                                              Point<2>(-1.0, 0.5),
+                                              Point<2>(2.2, 3.9));
     const FESystem<2> fe(FE_Q<2>(1), 4);
     DoFHandler<2>     dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
@@ -282,7 +293,8 @@ namespace
 int
 main()
 {
-  std::cout << "Element stiffness and load on a 0.7 x 1.9 rectangle" << std::endl;
+  std::cout << "Element stiffness and load on a 0.7 x 1.9 rectangle"
+            << std::endl;
   check_element();
   check_patch_test();
 }

@@ -12,9 +12,8 @@
 // against the series (while the error is well above its 4e-6 precision) and
 // from three successive meshes without any reference (Richardson).
 
-#include "plate_runs.h"
-
 #include "../test_tools.h"
+#include "plate_runs.h"
 
 #include <cmath>
 #include <iomanip>
@@ -28,12 +27,13 @@ namespace
   struct Study
   {
     std::vector<unsigned int> n;
-    std::vector<double>       w;     // centre deflection (mm)
+    std::vector<double>       w; // centre deflection (mm)
     double                    w_series = 0;
   };
 
   Study
-  run_study(const std::string &boundary, const std::vector<unsigned int> &meshes)
+  run_study(const std::string               &boundary,
+            const std::vector<unsigned int> &meshes)
   {
     Study study;
     for (const unsigned int n : meshes)
@@ -92,7 +92,7 @@ main()
 
   const Study clamped = run_study("clamped", meshes);
   print("clamped as in the paper (w_xy free on the boundary)", clamped);
-  bool   decreasing = true, third_order = true;
+  bool decreasing = true, third_order = true;
   for (unsigned int k = 0; k + 1 < 4; ++k)
     {
       const double order =
@@ -122,7 +122,8 @@ main()
   verdict("error against the series < 1e-3 at 4x4, < 1e-4 at 8x8, < 1e-5 "
           "from 16x16 on",
           relative_error(fully, 0) < 1e-3 && relative_error(fully, 1) < 1e-4 &&
-            relative_error(fully, 2) < 1e-5 && relative_error(fully, 3) < 1e-5 &&
+            relative_error(fully, 2) < 1e-5 &&
+            relative_error(fully, 3) < 1e-5 &&
             relative_error(fully, 4) < 1e-5 && relative_error(fully, 5) < 1e-5);
   bool fourth_order = true;
   for (const unsigned int k : {2u, 3u})

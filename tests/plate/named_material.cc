@@ -28,8 +28,7 @@ namespace
   expect_run(const std::string &what, const Result &result)
   {
     std::cout << what << ": exit code 0: " << yes_no(result.code == 0)
-              << ", error output empty: " << yes_no(result.err.empty())
-              << "\n";
+              << ", error output empty: " << yes_no(result.err.empty()) << "\n";
   }
 } // namespace
 

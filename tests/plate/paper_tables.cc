@@ -12,9 +12,8 @@
 //  3. the contact nodes are exactly the interior nodes where w equals psi of
 //     eq. (64), written out here independently of the scene's expressions.
 
-#include "plate_runs.h"
-
 #include "../test_tools.h"
+#include "plate_runs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,8 +49,8 @@ namespace
   Gaps
   interior_gaps(const plate_runs::Run &run, const std::string &obstacle)
   {
-    const auto &dof_handler = run.scene->get_dof_handler();
-    const auto &values      = run.scene->nodal_values();
+    const auto                     &dof_handler = run.scene->get_dof_handler();
+    const auto                     &values      = run.scene->nodal_values();
     const std::vector<unsigned int> bfs_index =
       unilateral::fe::bfs_local_indices(dof_handler.get_fe());
     std::set<unsigned int>                       seen;
@@ -105,30 +104,31 @@ namespace
           "counts_" + std::to_string(row.n),
           plate_runs::paper_configuration("steel", "-100", "f1", row.n),
           "pdas");
-        const unsigned int n = row.n;
-        const bool         equal =
-          run.results().n_free == row.n_free &&
-          run.results().n_bounds == row.n_bounds &&
-          row.n_free == 4 * (n - 1) * (n - 1) + 4 * n &&
-          row.n_bounds == (n - 1) * (n - 1) && run.results().n_contact == 0;
+        const unsigned int n     = row.n;
+        const bool         equal = run.results().n_free == row.n_free &&
+                           run.results().n_bounds == row.n_bounds &&
+                           row.n_free == 4 * (n - 1) * (n - 1) + 4 * n &&
+                           row.n_bounds == (n - 1) * (n - 1) &&
+                           run.results().n_contact == 0;
         all_equal = all_equal && equal;
         std::cout << "  " << n << "x" << n << ": |J| = " << run.results().n_free
-                  << " (paper " << row.n_free << "), |J1| = "
-                  << run.results().n_bounds << " (paper " << row.n_bounds
-                  << ")" << std::endl;
+                  << " (paper " << row.n_free
+                  << "), |J1| = " << run.results().n_bounds << " (paper "
+                  << row.n_bounds << ")" << std::endl;
       }
     verdict("|J| and |J1| equal the paper's (and 4(n1-1)(n2-1) + 2(n1+n2), "
-            "(n1-1)(n2-1)) for all " + std::to_string(meshes.size()) + " meshes",
+            "(n1-1)(n2-1)) for all " +
+              std::to_string(meshes.size()) + " meshes",
             all_equal);
 
     bool fully_clamped = true;
     for (const unsigned int n : {4u, 10u, 20u})
       {
-        const auto run = plate_runs::run_plate(
-          "counts_fully_clamped_" + std::to_string(n),
-          plate_runs::paper_configuration("steel", "-100", "f1", n,
-                                          "fully clamped"),
-          "pdas");
+        const auto run =
+          plate_runs::run_plate("counts_fully_clamped_" + std::to_string(n),
+                                plate_runs::paper_configuration(
+                                  "steel", "-100", "f1", n, "fully clamped"),
+                                "pdas");
         fully_clamped = fully_clamped &&
                         run.results().n_free == 4 * (n - 1) * (n - 1) &&
                         run.results().n_bounds == (n - 1) * (n - 1);
@@ -146,8 +146,8 @@ namespace
                                               "Table 5 bronze psi1 f1 20x20",
                                               "Table 5 bronze psi1 f3 20x20"};
     std::cout << "cn for the 4x4, 10x10 and 20x20 rows (pdas)" << std::endl;
-    unsigned int n_rows = 0, n_equal = 0;
-    bool         obstacles_match = true, explained = true;
+    unsigned int          n_rows = 0, n_equal = 0;
+    bool                  obstacles_match = true, explained = true;
     std::set<std::string> differing;
     for (const auto &row : rows)
       {
@@ -155,14 +155,15 @@ namespace
           continue;
         ++n_rows;
         const std::string name = row_name(row);
-        const auto        run  = plate_runs::run_plate(
-          "table" + std::to_string(row.table) + "_" + row.material + "_" +
-            row.obstacle + "_" + row.force + "_" + std::to_string(row.n),
-          plate_runs::paper_configuration(row.material, row.obstacle,
-                                          row.force, row.n),
-          "pdas");
-        const Gaps gap_data = interior_gaps(run, row.obstacle);
-        const auto &gaps    = gap_data.free;
+        const auto        run =
+          plate_runs::run_plate("table" + std::to_string(row.table) + "_" +
+                                  row.material + "_" + row.obstacle + "_" +
+                                  row.force + "_" + std::to_string(row.n),
+                                plate_runs::paper_configuration(
+                                  row.material, row.obstacle, row.force, row.n),
+                                "pdas");
+        const Gaps  gap_data = interior_gaps(run, row.obstacle);
+        const auto &gaps     = gap_data.free;
         // The contact nodes are exactly the nodes on psi of eq. (64).
         obstacles_match = obstacles_match && run.report.converged() &&
                           gap_data.below == 0 &&
@@ -179,18 +180,16 @@ namespace
           }
         differing.insert(name);
         const unsigned int extra = row.n_contact - cn;
-        const bool         group =
-          cn < row.n_contact && extra < gaps.size() &&
-          gaps[extra] > 2 * gaps[extra - 1];
+        const bool         group = cn < row.n_contact && extra < gaps.size() &&
+                           gaps[extra] > 2 * gaps[extra - 1];
         explained = explained && group;
-        std::cout << std::setprecision(1) << std::scientific
-                  << ": the paper's " << extra
+        std::cout << std::setprecision(1) << std::scientific << ": the paper's "
+                  << extra
                   << " extra nodes are our free nodes nearest the obstacle "
                      "(gap <= "
                   << (extra <= gaps.size() ? gaps[extra - 1] : 0.0)
-                  << " mm, next "
-                  << (extra < gaps.size() ? gaps[extra] : 0.0) << " mm): "
-                  << (group ? "yes" : "no") << std::defaultfloat
+                  << " mm, next " << (extra < gaps.size() ? gaps[extra] : 0.0)
+                  << " mm): " << (group ? "yes" : "no") << std::defaultfloat
                   << std::setprecision(6) << std::endl;
       }
     verdict("all runs converged; the contact nodes are exactly the nodes on "

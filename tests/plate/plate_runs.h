@@ -65,10 +65,9 @@ namespace plate_runs
     dealii::ParameterHandler prm;
     context.solver.declare_parameters(prm);
     unilateral::plate::PlateScene::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Solver\n  set Method = " + method +
-                                "\n" + solver_settings +
-                                "end\nsubsection Plate\n" +
-                                plate_parameters + "end\n");
+    prm.parse_input_from_string(
+      "subsection Solver\n  set Method = " + method + "\n" + solver_settings +
+      "end\nsubsection Plate\n" + plate_parameters + "end\n");
 
     context.run_name = name;
     context.solver.parse_parameters(prm);
@@ -95,18 +94,19 @@ namespace plate_runs
   {
     unsigned int table;
     std::string  material, obstacle, force; ///< force as f1, f2, f3
-    unsigned int n;                          ///< n1 = n2
+    unsigned int n;                         ///< n1 = n2
     unsigned int n_free, n_bounds, n_contact;
   };
 
   inline std::vector<PaperRow>
   read_paper_tables(const std::string &file_name)
   {
-    std::ifstream         file(file_name);
-    std::vector<PaperRow> rows;
-    std::string           line;
-    const std::map<std::string, std::string> force_name = {
-      {"-1", "f1"}, {"-5", "f2"}, {"-10", "f3"}};
+    std::ifstream                            file(file_name);
+    std::vector<PaperRow>                    rows;
+    std::string                              line;
+    const std::map<std::string, std::string> force_name = {{"-1", "f1"},
+                                                           {"-5", "f2"},
+                                                           {"-10", "f3"}};
     while (std::getline(file, line))
       {
         if (line.empty() || line[0] == '#' || line.rfind("table", 0) == 0)
@@ -117,12 +117,12 @@ namespace plate_runs
         while (std::getline(fields, item, ','))
           field.push_back(item);
         PaperRow row;
-        row.table     = std::stoi(field[0]);
-        row.material  = field[1];
-        row.obstacle  = field[2];
-        row.force     = force_name.at(field[3]);
+        row.table              = std::stoi(field[0]);
+        row.material           = field[1];
+        row.obstacle           = field[2];
+        row.force              = force_name.at(field[3]);
         const unsigned int ele = std::stoi(field[4]);
-        row.n         = 0;
+        row.n                  = 0;
         while (row.n * row.n < ele)
           ++row.n;
         row.n_free    = std::stoi(field[5]);

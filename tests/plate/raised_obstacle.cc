@@ -4,9 +4,8 @@
 // say so and agree. Before the fix of the work check's sign (b^T u +
 // lambda_S^T l_S, not minus) every exact answer here was 'inaccurate'.
 #include "../registered_methods.h"
-#include "plate_runs.h"
-
 #include "../test_tools.h"
+#include "plate_runs.h"
 
 #include <cmath>
 
@@ -18,12 +17,14 @@ main()
   const std::string plate = "subsection Geometry\n  set Elements x = 8\n"
                             "  set Elements y = 8\nend\n"
                             "subsection Obstacle\n  set Function = 0.1\nend\n";
-  const auto reference = plate_runs::run_plate(
-    "raised_reference", plate, unilateral::lcp::default_method().name);
+  const auto        reference =
+    plate_runs::run_plate("raised_reference",
+                          plate,
+                          unilateral::lcp::default_method().name);
   std::cout << "reference: "
             << unilateral::lcp::to_string(reference.report.status)
-            << ", cn = " << reference.results().n_contact << " of |J1| = "
-            << reference.results().n_bounds << std::endl;
+            << ", cn = " << reference.results().n_contact
+            << " of |J1| = " << reference.results().n_bounds << std::endl;
   verdict("the reference lies on the obstacle at every interior node",
           reference.report.converged() &&
             reference.results().n_contact == reference.results().n_bounds);
@@ -37,19 +38,18 @@ main()
                                              method.name(),
                                              false,
                                              method.prm_settings());
-      double difference = 0, scale = 0;
+      double     difference = 0, scale = 0;
       for (unsigned int i = 0; i < run.scene->nodal_values().size(); ++i)
         {
-          difference =
-            std::max(difference,
-                     std::abs(run.scene->nodal_values()[i] -
-                              reference.scene->nodal_values()[i]));
+          difference = std::max(difference,
+                                std::abs(run.scene->nodal_values()[i] -
+                                         reference.scene->nodal_values()[i]));
           scale = std::max(scale, std::abs(reference.scene->nodal_values()[i]));
         }
-      const bool agree = run.report.converged() &&
-                         run.results().n_contact ==
-                           reference.results().n_contact &&
-                         difference <= 1e-8 * scale;
+      const bool agree =
+        run.report.converged() &&
+        run.results().n_contact == reference.results().n_contact &&
+        difference <= 1e-8 * scale;
       if (!agree)
         std::cout << "  " << method.label() << ": "
                   << unilateral::lcp::to_string(run.report.status) << ", "

@@ -6,9 +6,8 @@
 // makes the test fail (SolverRegistry throws), never skip.
 
 #include "../registered_methods.h"
-#include "plate_runs.h"
-
 #include "../test_tools.h"
+#include "plate_runs.h"
 
 #include <cmath>
 
@@ -53,19 +52,18 @@ main()
     {"steel", "psi1", "f1", "10"},
     {"steel", "psi3", "f1", "10"},
     {"bronze", "psi3", "f1", "20"}};
-  const std::string         reference_method = unilateral::lcp::default_method().name;
-  const std::vector<Method> methods          = all_methods();
+  const std::string reference_method = unilateral::lcp::default_method().name;
+  const std::vector<Method> methods  = all_methods();
 
   bool all = true;
   for (const auto &c : configurations)
     {
-      const unsigned int n    = std::stoi(c[3]);
+      const unsigned int n = std::stoi(c[3]);
       const std::string  plate =
         plate_runs::paper_configuration(c[0], c[1], c[2], n);
       const std::string name = c[0] + "_" + c[1] + "_" + c[2] + "_" + c[3];
-      const auto reference = plate_runs::run_plate(name + "_reference",
-                                                   plate,
-                                                   reference_method);
+      const auto        reference =
+        plate_runs::run_plate(name + "_reference", plate, reference_method);
       std::cout << c[0] << " " << c[1] << " " << c[2] << " " << n << "x" << n
                 << ": " << reference_method << " "
                 << (reference.report.converged() ? "converged" : "FAILED")
@@ -73,23 +71,24 @@ main()
       all = all && reference.report.converged();
       for (const Method &method : methods)
         {
-          const auto run = plate_runs::run_plate(name + "_" +
-                                                   std::to_string(&method -
-                                                                  &methods[0]),
-                                                 plate,
-                                                 method.name(),
-                                                 false,
-                                                 method.prm_settings());
+          const auto run =
+            plate_runs::run_plate(name + "_" +
+                                    std::to_string(&method - &methods[0]),
+                                  plate,
+                                  method.name(),
+                                  false,
+                                  method.prm_settings());
           const bool agree =
             run.report.converged() &&
             run.results().n_contact == reference.results().n_contact &&
             relative_difference(run.scene->nodal_values(),
                                 reference.scene->nodal_values()) < 1e-8;
           all = all && agree;
-          verdict("  " + method.label() +
-                    ": converged, same cn, nodal DOFs within 1e-8 relative of " +
-                    reference_method,
-                  agree);
+          verdict(
+            "  " + method.label() +
+              ": converged, same cn, nodal DOFs within 1e-8 relative of " +
+              reference_method,
+            agree);
         }
     }
   verdict("all methods agree on all configurations", all);
@@ -101,14 +100,15 @@ main()
     {
       const std::string plate =
         plate_runs::paper_configuration("steel", "psi3", "f1", n);
-      const auto from_zero = plate_runs::run_plate(
-        "coarse_start_off_" + std::to_string(n),
-        plate + "set Coarse-mesh start = false\n", "pdas");
-      const auto nested = plate_runs::run_plate(
-        "coarse_start_on_" + std::to_string(n),
-        plate + "set Coarse-mesh start = true\n", "pdas");
-      std::cout << "steel psi3 f1 " << n << "x" << n
-                << ": pdas started from";
+      const auto from_zero =
+        plate_runs::run_plate("coarse_start_off_" + std::to_string(n),
+                              plate + "set Coarse-mesh start = false\n",
+                              "pdas");
+      const auto nested =
+        plate_runs::run_plate("coarse_start_on_" + std::to_string(n),
+                              plate + "set Coarse-mesh start = true\n",
+                              "pdas");
+      std::cout << "steel psi3 f1 " << n << "x" << n << ": pdas started from";
       bool levels_converged = true;
       for (const auto &level : nested.scene->coarse_mesh_levels())
         {
@@ -120,7 +120,8 @@ main()
       verdict("  from zero: no coarse mesh; nested: converged on every mesh",
               from_zero.scene->coarse_mesh_levels().empty() &&
                 from_zero.report.converged() && nested.report.converged() &&
-                !nested.scene->coarse_mesh_levels().empty() && levels_converged);
+                !nested.scene->coarse_mesh_levels().empty() &&
+                levels_converged);
       verdict("  same cn, nodal DOFs within 1e-10 relative",
               nested.results().n_contact == from_zero.results().n_contact &&
                 relative_difference(nested.scene->nodal_values(),

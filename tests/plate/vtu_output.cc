@@ -35,8 +35,8 @@ namespace
                        << plate << "end\n";
     std::ostringstream out, err;
     std::string        program = "unilateral", file = prm;
-    char              *argv[]  = {program.data(), file.data()};
-    const int          code    = unilateral::run_application(2, argv, out, err);
+    char              *argv[] = {program.data(), file.data()};
+    const int          code   = unilateral::run_application(2, argv, out, err);
     std::cout << name << ": exit code " << code << err.str() << std::endl;
     return code;
   }
@@ -91,7 +91,8 @@ main()
 
   run("no_vtu", paper, false);
   bool none_written = std::filesystem::exists("results/no_vtu/summary.json");
-  for (const auto &entry : std::filesystem::directory_iterator("results/no_vtu"))
+  for (const auto &entry :
+       std::filesystem::directory_iterator("results/no_vtu"))
     none_written = none_written && entry.path().extension() != ".vtu" &&
                    entry.path().extension() != ".pvd";
   verdict("Write VTU = false writes summary.json but no VTU or PVD file",

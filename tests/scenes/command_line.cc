@@ -21,8 +21,8 @@ namespace
         std::size_t end = text.find('\n', start);
         if (end == std::string::npos)
           end = text.size();
-        count += text.substr(start, end - start).find(fragment) !=
-                 std::string::npos;
+        count +=
+          text.substr(start, end - start).find(fragment) != std::string::npos;
         start = end + 1;
       }
     return count;
@@ -35,8 +35,7 @@ namespace
     std::cout << what << ":\n  exit code 0: " << yes_no(result.code == 0)
               << "\n  error output empty: " << yes_no(result.err.empty())
               << "\n  one line on stdout says no parameter is set: "
-              << yes_no(count_lines_with(result.out,
-                                         "sets no parameter") == 1)
+              << yes_no(count_lines_with(result.out, "sets no parameter") == 1)
               << "\n  and names the file and the default scene: "
               << yes_no(count_lines_with(result.out, file_name) >= 1 &&
                         count_lines_with(result.out, "masonry") >= 1)
@@ -73,8 +72,7 @@ main()
     const Result result = run({"not_empty.prm"});
     std::cout << "a parameter file that sets something: no such note: "
               << yes_no(result.code == 0 &&
-                        count_lines_with(result.out, "sets no parameter") ==
-                          0)
+                        count_lines_with(result.out, "sets no parameter") == 0)
               << "\n";
   }
 

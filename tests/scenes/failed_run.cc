@@ -5,9 +5,9 @@
 // writes a summary.json saying so: scene, run_name, status "error", the
 // one-line message and converged = false. The memory message names
 // 'Memory limit' first when the limit, not the machine, was the bound.
-#include "../application_test_tools.h"
-
 #include <unilateral/base/memory.h>
+
+#include "../application_test_tools.h"
 
 #include <filesystem>
 
@@ -36,8 +36,9 @@ namespace
   }
 
   void
-  expect_no_directory(const std::string &what, const std::string &name,
-                      const Result &result)
+  expect_no_directory(const std::string &what,
+                      const std::string &name,
+                      const Result      &result)
   {
     std::cout << what << ": exit code 1: " << yes_no(result.code == 1)
               << ", no run directory: "
@@ -62,12 +63,11 @@ namespace
               << "\n  parameters.prm written: "
               << yes_no(fs::exists("results/" + name + "/parameters.prm"))
               << "\n";
-    for (const std::string &entry :
-         {"\"scene\": \"" + scene + "\"",
-          "\"run_name\": \"" + name + "\"",
-          std::string("\"status\": \"error\""),
-          "\"message\": \"" + message + "\"",
-          std::string("\"converged\": false")})
+    for (const std::string &entry : {"\"scene\": \"" + scene + "\"",
+                                     "\"run_name\": \"" + name + "\"",
+                                     std::string("\"status\": \"error\""),
+                                     "\"message\": \"" + message + "\"",
+                                     std::string("\"converged\": false")})
       std::cout << "  summary.json has " << entry.substr(0, 22)
                 << (entry.size() > 22 ? "..." : "") << ": "
                 << yes_no(summary.find(entry) != std::string::npos) << "\n";
@@ -80,8 +80,9 @@ main()
   fs::remove_all("results");
   expect_no_directory("a misspelt parameter",
                       "misspelt",
-                      run_prm("misspelt", "set Scene = masonry\n"
-                                          "set Memory limt = 1\n"));
+                      run_prm("misspelt",
+                              "set Scene = masonry\n"
+                              "set Memory limt = 1\n"));
   expect_no_directory("m = 0 (refused by the scene's constructor)",
                       "zero_blocks",
                       run_prm("zero_blocks",
@@ -121,8 +122,7 @@ main()
   for (const double gigabytes : {0.0, 0.001, 1e9})
     {
       unilateral::memory::set_limit(1e9 * gigabytes);
-      std::cout << "  'Memory limit' = " << gigabytes
-                << " GB is the bound: "
+      std::cout << "  'Memory limit' = " << gigabytes << " GB is the bound: "
                 << yes_no(unilateral::memory::limit_binds()) << "\n";
     }
 }

@@ -60,7 +60,7 @@ namespace
   long
   counter(const std::string &summary, const std::string &name)
   {
-    std::smatch match;
+    std::smatch       match;
     const std::string counters = object(summary, "counters");
     if (!std::regex_search(counters,
                            match,
@@ -81,15 +81,15 @@ namespace
                               "  set Blocks per side = 5\n"
                               "end\n";
   const std::string plate   = "set Scene = plate\n"
-                            "subsection Plate\n"
-                            "  subsection Geometry\n"
-                            "    set Elements x = 10\n"
-                            "    set Elements y = 10\n"
-                            "  end\n"
-                            "  subsection Obstacle\n"
-                            "    set Function = OBSTACLE\n"
-                            "  end\n"
-                            "end\n";
+                              "subsection Plate\n"
+                              "  subsection Geometry\n"
+                              "    set Elements x = 10\n"
+                              "    set Elements y = 10\n"
+                              "  end\n"
+                              "  subsection Obstacle\n"
+                              "    set Function = OBSTACLE\n"
+                              "  end\n"
+                              "end\n";
 
   std::string
   with_obstacle(const std::string &obstacle)
@@ -116,11 +116,10 @@ main()
   }
   {
     const std::string s = run("masonry_schur",
-                              masonry +
-                                "subsection Solver\n"
-                                "  set Schur complement = true\nend\n"
-                                "subsection Output\n"
-                                "  set Write VTU = true\nend\n");
+                              masonry + "subsection Solver\n"
+                                        "  set Schur complement = true\nend\n"
+                                        "subsection Output\n"
+                                        "  set Write VTU = true\nend\n");
     expect("masonry, Schur complement chosen: it runs",
            ran(s, "solver: schur complement"));
     expect("VTU on: the output stage runs", ran(s, "output results"));
@@ -139,10 +138,10 @@ main()
              counter(s, "symbolic_analyses") == 1);
   }
   {
-    const std::string s = run("plate_psi3",
-                              with_obstacle("psi3") +
-                                "subsection Output\n"
-                                "  set Write VTU = false\nend\n");
+    const std::string s =
+      run("plate_psi3",
+          with_obstacle("psi3") + "subsection Output\n"
+                                  "  set Write VTU = false\nend\n");
     expect("plate on psi3: at most one ordering for every active set",
            counter(s, "orderings") <= 1);
     expect("no Schur complement, no regularisation",

@@ -42,7 +42,7 @@ namespace
   {
     std::size_t n = 0;
     for (auto at = text.find(fragment); at != std::string::npos;
-         at       = text.find(fragment, at + 1))
+         at      = text.find(fragment, at + 1))
       ++n;
     return n;
   }
@@ -74,8 +74,7 @@ main()
                  "elsewhere/up");
 
   write("cases/sub/absolute.prm",
-        lcp_prm("  set Directory = " + fs::absolute("in_cwd").string() +
-                "\n"));
+        lcp_prm("  set Directory = " + fs::absolute("in_cwd").string() + "\n"));
   const Result absolute = run({"cases/sub/absolute.prm"});
   std::cout << "an absolute Directory: exit code 0: "
             << yes_no(absolute.code == 0) << ", used as it is: "

@@ -27,8 +27,9 @@ int
 main()
 {
   // A = diag(1, 0), b = (1, 1), u >= 0: lambda_2 = -1 whatever u is.
-  write("A.mtx", "%%MatrixMarket matrix coordinate real symmetric\n"
-                 "2 2 1\n1 1 1\n");
+  write("A.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n"
+        "2 2 1\n1 1 1\n");
   write("b.txt", "1\n1\n");
   write("c.txt", "1 0\n2 0\n");
   for (const std::string method : {"pdas", "graves"})
@@ -43,7 +44,8 @@ main()
       std::cout << "LCP without a solution, " << method
                 << ": exit code 2: " << yes_no(result.code == 2)
                 << ", one line on stderr: "
-                << yes_no(std::count(result.err.begin(), result.err.end(),
+                << yes_no(std::count(result.err.begin(),
+                                     result.err.end(),
                                      '\n') == 1)
                 << "\n  " << result.err;
     }

@@ -21,7 +21,7 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 int
 main()
 {
-  const int n = 20000, half_bandwidth = 15;
+  const int                           n = 20000, half_bandwidth = 15;
   std::vector<Eigen::Triplet<double>> entries;
   for (int j = 0; j < n; ++j)
     for (int i = std::max(0, j - half_bandwidth);
@@ -36,8 +36,8 @@ main()
 
   for (const bool fresh : {false, true})
     {
-      SparseMatrix reduced = A; // what the member held before
-      const auto   start   = std::chrono::steady_clock::now();
+      SparseMatrix     reduced = A; // what the member held before
+      const auto       start   = std::chrono::steady_clock::now();
       std::vector<int> index(n, -1);
       int              n_free = 0;
       for (int i = 0; i < n; ++i)

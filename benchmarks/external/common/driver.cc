@@ -160,11 +160,11 @@ namespace external
     const std::filesystem::path input(argv[2]);
     const std::filesystem::path output(argv[3]);
 
-    Problem     problem;
-    Outcome     outcome;
-    std::string options_text;
-    double      read_time = 0, total_time = 0;
-    bool        solved    = false;
+    Problem         problem;
+    Outcome         outcome;
+    std::string     options_text;
+    double          read_time = 0, total_time = 0;
+    bool            solved = false;
     const Stopwatch total;
     try
       {

@@ -80,8 +80,8 @@ namespace external
   struct Outcome
   {
     /// "converged", or the package's own word for what happened.
-    std::string status = "converged";
-    bool        converged = true;
+    std::string status     = "converged";
+    bool        converged  = true;
     long        iterations = 0;
     /// Free text: the package's reason code, factorisation used, ...
     std::string message;

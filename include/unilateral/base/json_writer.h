@@ -15,29 +15,42 @@ namespace unilateral
   class JsonObject
   {
   public:
-    JsonObject &set(const std::string &key, double value);
-    JsonObject &set(const std::string &key, long long value);
-    JsonObject &set(const std::string &key, unsigned long value);
-    JsonObject &set(const std::string &key, unsigned int value);
-    JsonObject &set(const std::string &key, int value);
-    JsonObject &set(const std::string &key, bool value);
-    JsonObject &set(const std::string &key, const std::string &value);
-    JsonObject &set(const std::string &key, const char *value);
-    JsonObject &set(const std::string &key, const JsonObject &value);
+    JsonObject &
+    set(const std::string &key, double value);
+    JsonObject &
+    set(const std::string &key, long long value);
+    JsonObject &
+    set(const std::string &key, unsigned long value);
+    JsonObject &
+    set(const std::string &key, unsigned int value);
+    JsonObject &
+    set(const std::string &key, int value);
+    JsonObject &
+    set(const std::string &key, bool value);
+    JsonObject &
+    set(const std::string &key, const std::string &value);
+    JsonObject &
+    set(const std::string &key, const char *value);
+    JsonObject &
+    set(const std::string &key, const JsonObject &value);
     /// An array of objects (written as they are now; for a top-level key).
-    JsonObject &set(const std::string             &key,
-                    const std::vector<JsonObject> &array);
+    JsonObject &
+    set(const std::string &key, const std::vector<JsonObject> &array);
 
     /// The nested object under @p key, created if absent.
-    JsonObject &object(const std::string &key);
+    JsonObject &
+    object(const std::string &key);
 
-    void write(std::ostream &out, unsigned int indent = 0) const;
+    void
+    write(std::ostream &out, unsigned int indent = 0) const;
 
     /// Write to @p file_name, throwing InputError if it cannot be written.
-    void write_file(const std::string &file_name) const;
+    void
+    write_file(const std::string &file_name) const;
 
   private:
-    void set_raw(const std::string &key, const std::string &json_text);
+    void
+    set_raw(const std::string &key, const std::string &json_text);
 
     // Either a rendered scalar or an index into children.
     struct Entry

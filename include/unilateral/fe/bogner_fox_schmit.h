@@ -91,8 +91,8 @@ namespace unilateral::fe
 
     /// All 16 values, gradients and Hessians at p; null pointers are skipped.
     void
-    evaluate(const dealii::Point<2>                        &p,
-             std::array<double, dofs_per_cell>             *values,
+    evaluate(const dealii::Point<2>                          &p,
+             std::array<double, dofs_per_cell>               *values,
              std::array<dealii::Tensor<1, 2>, dofs_per_cell> *gradients,
              std::array<dealii::Tensor<2, 2>, dofs_per_cell> *hessians) const;
 

@@ -24,11 +24,11 @@ namespace unilateral::lcp
     std::vector<Index> reduced_index;
     Index              n_free = 0;
     /// D_X on the fixed indices.
-    Vector         fixed_diagonal;
+    Vector fixed_diagonal;
     /// The AMD ordering of A's pattern the factor was made in (new-to-old),
     /// for a later system on the same pattern.
     std::vector<Index> ordering_of_A;
-    SparseCholesky cholesky;
+    SparseCholesky     cholesky;
 
     /// X = K(X)^-1 B.
     void
@@ -87,9 +87,9 @@ namespace unilateral::lcp
   public:
     /// @p inherited: a factor of a nearby matrix (e.g. of A + eps I) to
     /// try first; may be null.
-    ActiveSetSystem(const SparseMatrix                     &A,
-                    Counters                               &counters,
-                    std::shared_ptr<const ActiveSetFactor>  inherited = {});
+    ActiveSetSystem(const SparseMatrix                    &A,
+                    Counters                              &counters,
+                    std::shared_ptr<const ActiveSetFactor> inherited = {});
 
     /**
      * On entry x holds the fixed values on X (other entries are ignored); on
@@ -188,8 +188,9 @@ namespace unilateral::lcp
 
     /// K(X) y: A on the free part, the diagonal on the fixed part.
     void
-    apply(const std::vector<char> &fixed, const DenseMatrix &Y,
-          DenseMatrix &KY) const;
+    apply(const std::vector<char> &fixed,
+          const DenseMatrix       &Y,
+          DenseMatrix             &KY) const;
 
     /// CG iterations allowed with the factor of a fixed set @p changes
     /// indices away, 0 if factorising anew is expected to be cheaper.
@@ -211,23 +212,23 @@ namespace unilateral::lcp
                       DenseMatrix             &X,
                       unsigned int             max_iterations);
 
-    const SparseMatrix                     &A;
-    Counters                               &counters;
+    const SparseMatrix &A;
+    Counters           &counters;
     /// The full pattern with fixed rows/columns diagonal, or A_FF.
-    SparseMatrix                            reduced;
+    SparseMatrix reduced;
     /// AMD ordering of A (new-to-old), computed on first need.
-    std::vector<Index>                      full_ordering;
-    std::shared_ptr<ActiveSetFactor>        own;
-    bool                                    own_valid = false;
-    std::shared_ptr<const ActiveSetFactor>  inherited;
+    std::vector<Index>                     full_ordering;
+    std::shared_ptr<ActiveSetFactor>       own;
+    bool                                   own_valid = false;
+    std::shared_ptr<const ActiveSetFactor> inherited;
     /// Diagonal used for fixed rows: A_jj if positive, else the mean diagonal.
-    Vector                                  fixed_diagonal;
+    Vector fixed_diagonal;
     /// Modification flops per entry of L on the changed rows' elimination
     /// paths (SparseCholesky::modification_path_entries), as measured in
     /// the last update: predicts the cost of the next one. CHOLMOD's update
     /// and downdate do about four per entry, whatever the size (measured on
     /// the plates: benchmarks/plate_tables/README.md, "Design
     /// measurements").
-    double                                  flops_per_path_entry = 4;
+    double flops_per_path_entry = 4;
   };
 } // namespace unilateral::lcp

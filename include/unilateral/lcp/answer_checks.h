@@ -60,12 +60,12 @@ namespace unilateral::lcp
    * and of dual feasibility must be at most @p kkt_tolerance F; and double
    * precision must resolve the forces that finely: the rounding error of
    * A u, epsilon |A| |u|_inf, must be at most @p kkt_tolerance F too (it
-   * bounds the accuracy of the contact forces and of the energy). Both catch what the
-   * relative KKT residuals (measured against |A| |u|) miss where the
-   * displacements are mostly rigid motions far larger than the elastic ones:
-   * blocks that settle by a gap a billion times their elastic deformation,
-   * or that hang in the air held by round-off. Without loads (b = 0) there
-   * is nothing to balance and the check passes.
+   * bounds the accuracy of the contact forces and of the energy). Both
+   * catch what the relative KKT residuals (measured against |A| |u|) miss
+   * where the displacements are mostly rigid motions far larger than the
+   * elastic ones: blocks that settle by a gap a billion times their elastic
+   * deformation, or that hang in the air held by round-off. Without loads (b =
+   * 0) there is nothing to balance and the check passes.
    */
   void
   check_balance(const Problem  &problem,

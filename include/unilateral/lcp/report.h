@@ -31,7 +31,7 @@ namespace unilateral::lcp
     unsigned int numeric_factorisations = 0;
     /// Systems solved with the factor of a nearby matrix as preconditioner
     /// instead of a new factorisation.
-    unsigned int reused_factorisations  = 0;
+    unsigned int reused_factorisations = 0;
     /// Systems solved with a factor updated row by row from the previous
     /// active set's (CHOLMOD's rowadd/rowdel) instead of a new one.
     unsigned int modified_factorisations = 0;
@@ -40,10 +40,10 @@ namespace unilateral::lcp
     /// Sets of indices an active-set method could not settle, resolved
     /// exactly through their Schur complement (resolve_subset), and their
     /// total size.
-    unsigned int resolved_subsets        = 0;
-    unsigned int resolved_indices        = 0;
-    unsigned int cg_iterations          = 0;
-    unsigned int triangular_solves      = 0; ///< one per right-hand side
+    unsigned int resolved_subsets  = 0;
+    unsigned int resolved_indices  = 0;
+    unsigned int cg_iterations     = 0;
+    unsigned int triangular_solves = 0; ///< one per right-hand side
     /// Right-hand sides solved forward only, along their elimination-tree
     /// paths (SparseCholesky::inverse_gram, for resolved subsets).
     unsigned int partial_forward_solves = 0;
@@ -70,7 +70,7 @@ namespace unilateral::lcp
     unsigned int projection_iterations = 0;
     /// eps-continuation stages the projection needed (0 normally).
     unsigned int continuation_stages = 0;
-    bool         projected             = false;
+    bool         projected           = false;
     /// Regularisation actually added to the diagonal (absolute), 0 if none.
     double       regularisation = 0;
     unsigned int n_active       = 0;
@@ -117,9 +117,9 @@ namespace unilateral::lcp
     }
 
   private:
-    Report                                &report;
-    std::string                            phase;
-    std::chrono::steady_clock::time_point  start;
+    Report                               &report;
+    std::string                           phase;
+    std::chrono::steady_clock::time_point start;
   };
 
   /**

@@ -195,7 +195,7 @@ namespace unilateral::lcp
       verification
     };
 
-    Kind   kind = Kind::hand_over;
+    Kind kind = Kind::hand_over;
     /// The status of the attempt that calls for it.
     Status when = Status::iteration_limit;
     /// Only at the method's default iteration limit: a limit the user set
@@ -312,10 +312,10 @@ namespace unilateral::lcp
     return SolverRegistry::add(std::move(info));
   }
 
-#define UNILATERAL_REGISTER_SOLVER(Method)  \
-  namespace                                 \
-  {                                         \
-    const bool registered_solver_##Method = \
+#define UNILATERAL_REGISTER_SOLVER(Method)          \
+  namespace                                         \
+  {                                                 \
+    const bool registered_solver_##Method =         \
       ::unilateral::lcp::register_solver<Method>(); \
   }
 } // namespace unilateral::lcp

@@ -43,7 +43,7 @@ namespace unilateral::lcp
      * the Analyse phase", restricted to a submatrix).
      */
     bool
-    factorise(const SparseMatrix        &A,
+    factorise(const SparseMatrix       &A,
               const std::vector<Index> &ordering,
               Counters                 &counters);
 
@@ -103,13 +103,13 @@ namespace unilateral::lcp
     /// before k, for every deleted row (what that cost:
     /// benchmarks/masonry_tables/README.md, "Design measurements").
     bool
-    delete_row(Index k, double diagonal,
-               const std::vector<Index> &column_rows);
+    delete_row(Index k, double diagonal, const std::vector<Index> &column_rows);
 
     /// @p rows, @p values: the new column k (the diagonal included), with
     /// entries only where the other rows are not themselves diagonal.
     bool
-    add_row(Index k, const std::vector<Index> &rows,
+    add_row(Index                      k,
+            const std::vector<Index>  &rows,
             const std::vector<double> &values);
 
     /// Whether the simplicial copy for modifications exists (it is made by
@@ -183,7 +183,7 @@ namespace unilateral::lcp
     /// The working copy for modifications, made on first need; false if
     /// there is no valid factor or CHOLMOD fails.
     bool
-    prepare_modification();
+                                    prepare_modification();
     std::unique_ptr<Implementation> implementation;
   };
 } // namespace unilateral::lcp

@@ -38,7 +38,7 @@ namespace unilateral
     lcp::SolverParameters solver;
     std::ostream         *out      = nullptr; ///< the screen, or null
     std::ostream         *progress = nullptr; ///< iteration lines, or null
-    dealii::TimerOutput  *timer    = nullptr; ///< one section per stage, or null
+    dealii::TimerOutput  *timer = nullptr; ///< one section per stage, or null
 
     /// A timer section named @p name while the result lives (nothing if
     /// there is no timer).
@@ -201,20 +201,20 @@ namespace unilateral
    *   static void declare_parameters(dealii::ParameterHandler &);
    *   explicit classname(dealii::ParameterHandler &);   // parse + validate
    */
-#define UNILATERAL_REGISTER_SCENE(classname, description)                      \
-  namespace                                                                   \
-  {                                                                           \
-    const bool registered_scene_##classname =                                 \
-      ::unilateral::SceneRegistry::add(                                       \
-        {classname::registered_name,                                          \
-         description,                                                         \
-         [](dealii::ParameterHandler &prm) {                                  \
-           classname::declare_parameters(prm);                                \
-         },                                                                   \
-         [](dealii::ParameterHandler &prm)                                    \
-           -> std::unique_ptr<::unilateral::Scene> {                          \
-           return std::make_unique<classname>(prm);                           \
-         }});                                                                 \
+#define UNILATERAL_REGISTER_SCENE(classname, description) \
+  namespace                                               \
+  {                                                       \
+    const bool registered_scene_##classname =             \
+      ::unilateral::SceneRegistry::add(                   \
+        {classname::registered_name,                      \
+         description,                                     \
+         [](dealii::ParameterHandler &prm) {              \
+           classname::declare_parameters(prm);            \
+         },                                               \
+         [](dealii::ParameterHandler &prm)                \
+           -> std::unique_ptr<::unilateral::Scene> {      \
+           return std::make_unique<classname>(prm);       \
+         }});                                             \
   }
 
   /// The deterministic part of the one-screen summary (no timings).

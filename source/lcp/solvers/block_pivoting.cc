@@ -68,12 +68,12 @@ namespace unilateral::lcp
       properties()
       {
         SolverInfo info;
-        info.name        = "block_pivoting";
-        info.label       = "block principal pivoting";
-        info.description = "block principal pivoting of Judice & Pires "
-                           "(Fernandes et al.), parameters p, tolerance";
-        info.subsection            = "Block pivoting";
-        info.default_iterations    = "10|S| + 100";
+        info.name               = "block_pivoting";
+        info.label              = "block principal pivoting";
+        info.description        = "block principal pivoting of Judice & Pires "
+                                  "(Fernandes et al.), parameters p, tolerance";
+        info.subsection         = "Block pivoting";
+        info.default_iterations = "10|S| + 100";
         info.needs_definite_matrix = true;
         return info;
       }
@@ -90,15 +90,15 @@ namespace unilateral::lcp
         const double       eps = options.tolerance;
 
         // at_bound[i]: i in S (the bound set). Step 1: R = Jf.
-        std::vector<char> at_bound = problem.constrained_mask();
-        std::vector<char> saved_at_bound;
+        std::vector<char>  at_bound = problem.constrained_mask();
+        std::vector<char>  saved_at_bound;
         std::vector<Index> H, saved_H;
         Index              ninf = n + 1;
         unsigned int       nit  = 0;
 
         ActiveSetSystem system(problem.A, report.counters);
-        Vector         &z     = solution.u;
-        z                     = Vector::Zero(n);
+        Vector         &z        = solution.u;
+        z                        = Vector::Zero(n);
         const unsigned int limit = iteration_limit(10 * n_c + 100);
         for (unsigned int iteration = 1;; ++iteration)
           {
@@ -126,9 +126,8 @@ namespace unilateral::lcp
                   H.push_back(i); // increasing, since S is sorted
               }
             if (progress != nullptr)
-              *progress << "    block pivoting iteration " << iteration
-                        << ": " << H.size() << " infeasibilities"
-                        << std::endl;
+              *progress << "    block pivoting iteration " << iteration << ": "
+                        << H.size() << " infeasibilities" << std::endl;
             if (H.empty())
               {
                 report.status = Status::converged;

@@ -30,10 +30,10 @@ namespace unilateral::lcp
         info.description =
           "Graves' principal pivoting simplex method, dense, lexicographic "
           "(use with 'Schur complement')";
-        info.default_iterations = "10|S| + 100";
+        info.default_iterations        = "10|S| + 100";
         info.dense                     = true;
         info.every_unknown_constrained = true;
-        info.single_pivot       = true;
+        info.single_pivot              = true;
         // Case 2 can claim that no solution exists through round-off
         // (Ainsworth & Mihai: running bond, m = 5, without load): PDAS,
         // which never makes that claim, checks it.

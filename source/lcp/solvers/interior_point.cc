@@ -43,9 +43,9 @@
  * factorisations (benchmarks/masonry_tables/README.md, "Design
  * measurements").
  */
+#include <unilateral/base/input_error.h>
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/shifted_system.h>
-#include <unilateral/base/input_error.h>
 #include <unilateral/lcp/solver.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -298,8 +298,8 @@ namespace unilateral::lcp
           affine_complementarity +=
             (gap[j] + alpha_affine * du[problem.constrained[j]]) *
             (w[j] + alpha_affine * dw[j]);
-        const double sigma = std::min(
-          1.0, std::pow(affine_complementarity / complementarity, 3));
+        const double sigma =
+          std::min(1.0, std::pow(affine_complementarity / complementarity, 3));
         target = sigma * complementarity / n_c;
         for (Index j = 0; j < n_c; ++j)
           centring[j] = target - du[problem.constrained[j]] * dw[j];
@@ -317,8 +317,7 @@ namespace unilateral::lcp
       correct_centrality(Vector &centring, const double target, double step)
       {
         const double low = 0.1 * target, high = 10 * target;
-        for (unsigned int c = 0;
-             c < options.centrality_correctors && step < 1;
+        for (unsigned int c = 0; c < options.centrality_correctors && step < 1;
              ++c)
           {
             const double trial = std::min(1.0, 1.5 * step);
@@ -444,8 +443,8 @@ namespace unilateral::lcp
       /// The rounding floor of the infeasibility.
       double floor = 0;
       /// For the floor test of converged().
-      double       previous_infeasibility = std::numeric_limits<double>::infinity();
-      unsigned int steps_at_floor         = 0;
+      double previous_infeasibility = std::numeric_limits<double>::infinity();
+      unsigned int steps_at_floor   = 0;
     };
 
     class InteriorPoint : public Solver
@@ -467,11 +466,11 @@ namespace unilateral::lcp
         info.label       = "interior point";
         info.description = "interior-point method of Fernandes, Figueiredo "
                            "& Judice (eqs. 42-56, start 66)";
-        info.subsection         = "Interior point";
+        info.subsection  = "Interior point";
         info.default_iterations = "500";
         info.exact              = false;
-        info.variants = {{"predictor-corrector",
-                          {{"Interior point/Variant", "predictor-corrector"}}}};
+        info.variants           = {{"predictor-corrector",
+                                    {{"Interior point/Variant", "predictor-corrector"}}}};
         return info;
       }
 
@@ -498,10 +497,9 @@ namespace unilateral::lcp
               }
             if (progress != nullptr && k > 0)
               *progress << "    interior point iteration " << k
-                        << std::scientific << std::setprecision(2)
-                        << ": gap " << ip.complementarity
-                        << ", infeasibility " << ip.infeasibility
-                        << std::defaultfloat << std::endl;
+                        << std::scientific << std::setprecision(2) << ": gap "
+                        << ip.complementarity << ", infeasibility "
+                        << ip.infeasibility << std::defaultfloat << std::endl;
             if (ip.converged())
               {
                 report.status = Status::converged;
@@ -509,12 +507,11 @@ namespace unilateral::lcp
               }
             if (k >= limit)
               {
-                report.status  = Status::iteration_limit;
-                report.message = "interior point reached " +
-                                 std::to_string(limit) + " iterations (gap " +
-                                 std::to_string(ip.complementarity) +
-                                 ", infeasibility " +
-                                 std::to_string(ip.infeasibility) + ")";
+                report.status = Status::iteration_limit;
+                report.message =
+                  "interior point reached " + std::to_string(limit) +
+                  " iterations (gap " + std::to_string(ip.complementarity) +
+                  ", infeasibility " + std::to_string(ip.infeasibility) + ")";
                 break;
               }
             report.iterations = k + 1;
@@ -524,8 +521,7 @@ namespace unilateral::lcp
                 report.status  = Status::singular;
                 report.message = "interior point: the matrix of (47) is not "
                                  "positive definite at iteration " +
-                                 std::to_string(k + 1) +
-                                 " (C_JfJf singular?)";
+                                 std::to_string(k + 1) + " (C_JfJf singular?)";
                 break;
               }
             double target   = 0; // sigma mu of the predictor-corrector

@@ -44,11 +44,11 @@ namespace unilateral::lcp
       properties()
       {
         SolverInfo info;
-        info.name        = "lssnn";
-        info.label       = "LSSNN";
-        info.description = "least squares with selected nonnegativity "
-                           "constraints (Lawson & Hanson; Ainsworth & Mihai)";
-        info.default_iterations    = "3|S| + 100";
+        info.name               = "lssnn";
+        info.label              = "LSSNN";
+        info.description        = "least squares with selected nonnegativity "
+                                  "constraints (Lawson & Hanson; Ainsworth & Mihai)";
+        info.default_iterations = "3|S| + 100";
         info.needs_definite_matrix = true;
         info.single_pivot          = true;
         return info;
@@ -60,8 +60,8 @@ namespace unilateral::lcp
             Report        &report,
             std::ostream  *progress) override
       {
-        const Index n   = problem.size();
-        const Index n_c = problem.n_constrained();
+        const Index  n     = problem.size();
+        const Index  n_c   = problem.n_constrained();
         const Vector bound = problem.full_lower_bound();
 
         // Step 1: SZ = S, u_SZ = l_SZ and u_E the matching optimum.
@@ -88,10 +88,9 @@ namespace unilateral::lcp
               problem.b.lpNorm<Eigen::Infinity>() +
               (abs_A * u.cwiseAbs()).lpNorm<Eigen::Infinity>();
             const double dual_tolerance = 10 * n * epsilon * force_scale;
-            Index        t = -1;
+            Index        t              = -1;
             for (const Index i : problem.constrained)
-              if (at_bound[i] && !set_aside[i] &&
-                  lambda[i] < -dual_tolerance &&
+              if (at_bound[i] && !set_aside[i] && lambda[i] < -dual_tolerance &&
                   (t < 0 || lambda[i] < lambda[t]))
                 t = i;
             if (t < 0)
@@ -101,9 +100,9 @@ namespace unilateral::lcp
               }
             if (iteration >= limit)
               {
-                report.status  = Status::iteration_limit;
-                report.message = "LSSNN reached " + std::to_string(limit) +
-                                 " iterations";
+                report.status = Status::iteration_limit;
+                report.message =
+                  "LSSNN reached " + std::to_string(limit) + " iterations";
                 return;
               }
 
@@ -116,15 +115,15 @@ namespace unilateral::lcp
             for (;;)
               {
                 u_bar = u;
-                if (!solve_qp(system, at_bound, problem, u_bar, report,
-                              iteration))
+                if (!solve_qp(
+                      system, at_bound, problem, u_bar, report, iteration))
                   return;
                 double alpha    = 1;
                 bool   feasible = true;
                 for (const Index i : problem.constrained)
                   if (!at_bound[i] && u_bar[i] <= bound[i])
                     {
-                      feasible = false;
+                      feasible          = false;
                       const double drop = u[i] - u_bar[i];
                       const double step =
                         drop > 0 ? (u[i] - bound[i]) / drop : 0.0;
@@ -140,8 +139,8 @@ namespace unilateral::lcp
                 u += alpha * (u_bar - u);
                 bool t_left = false;
                 for (const Index i : problem.constrained)
-                  if (!at_bound[i] && u[i] <= bound[i] + 10 * epsilon *
-                                                           std::abs(bound[i]))
+                  if (!at_bound[i] &&
+                      u[i] <= bound[i] + 10 * epsilon * std::abs(bound[i]))
                     {
                       at_bound[i] = 1;
                       u[i]        = bound[i];

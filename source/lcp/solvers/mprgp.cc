@@ -79,11 +79,8 @@ namespace unilateral::lcp
       void
       check(const std::string &section) const override
       {
-        check_parameter(gamma > 0,
-                        section,
-                        "Proportioning",
-                        gamma,
-                        "must be > 0");
+        check_parameter(
+          gamma > 0, section, "Proportioning", gamma, "must be > 0");
         check_parameter(step_length > 0,
                         section,
                         "Step length",
@@ -111,7 +108,7 @@ namespace unilateral::lcp
         info.description = "modified proportioning with reduced gradient "
                            "projections (Dostal & Schoberl), matrix-free "
                            "conjugate gradients with projections";
-        info.subsection            = "MPRGP";
+        info.subsection  = "MPRGP";
         info.default_iterations    = "100000 products with A";
         info.needs_definite_matrix = true;
         info.exact                 = false;
@@ -140,10 +137,10 @@ namespace unilateral::lcp
     class MprgpIterate
     {
     public:
-      MprgpIterate(const Problem  &problem,
-                   const double    alpha_bar,
-                   Vector         &u,
-                   Counters       &counters)
+      MprgpIterate(const Problem &problem,
+                   const double   alpha_bar,
+                   Vector        &u,
+                   Counters      &counters)
         : problem(problem)
         , lower(problem.full_lower_bound())
         , alpha_bar(alpha_bar)
@@ -304,18 +301,18 @@ namespace unilateral::lcp
       const double alpha_bar = options.step_length / (norm_A > 0 ? norm_A : 1);
       MprgpIterate mprgp(problem, alpha_bar, solution.u, report.counters);
 
-      const double scale = problem.b.norm() > 0 ? problem.b.norm() : 1.0;
+      const double       scale = problem.b.norm() > 0 ? problem.b.norm() : 1.0;
       const unsigned int limit = iteration_limit(100000);
       for (unsigned int iteration = 0;; ++iteration)
         {
-          const Vector phi  = mprgp.free_gradient();
-          const Vector beta = mprgp.chopped_gradient();
+          const Vector phi                = mprgp.free_gradient();
+          const Vector beta               = mprgp.chopped_gradient();
           const double projected_gradient = (phi + beta).norm() / scale;
           if (progress != nullptr && iteration > 0 &&
               (iteration & (iteration - 1)) == 0)
             *progress << "    mprgp iteration " << iteration
-                      << ": relative projected gradient "
-                      << projected_gradient << std::endl;
+                      << ": relative projected gradient " << projected_gradient
+                      << std::endl;
           if (!std::isfinite(projected_gradient))
             {
               report.status  = Status::singular;
@@ -338,8 +335,8 @@ namespace unilateral::lcp
             }
           report.iterations = iteration + 1;
           const bool proportional =
-            beta.squaredNorm() <= options.gamma * options.gamma *
-                                    mprgp.reduced_times_free(phi);
+            beta.squaredNorm() <=
+            options.gamma * options.gamma * mprgp.reduced_times_free(phi);
           if (!(proportional ? mprgp.conjugate_gradient_or_expansion() :
                                mprgp.proportioning(beta)))
             {

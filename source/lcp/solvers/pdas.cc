@@ -2,7 +2,8 @@
  * Primal-dual active set method (Hintermueller, Ito & Kunisch), as given by
  * Ainsworth & Mihai, Section 4 "PDAS". In our sign convention (lambda =
  * -Sigma, slack u - l):
- *   Step 2: lambda = A u - b; active SZ = {i in S : (u_i - l_i) - tau lambda_i < 0}
+ *   Step 2: lambda = A u - b;
+ *           active SZ = {i in S : (u_i - l_i) - tau lambda_i < 0}
  *   Step 3: stop if iter >= 1 and SZ did not change (then u_SZ = l_SZ,
  *           lambda_SP = 0, and the new sets certify feasibility)
  *   Step 4: solve A_FF u_F = b_F - A_F,SZ l_SZ with u_SZ = l_SZ.
@@ -138,7 +139,7 @@ namespace unilateral::lcp
       std::vector<Index>
       violated(const Vector &u, const std::vector<char> &active) const
       {
-        const Vector lambda = problem.A * u - problem.b;
+        const Vector       lambda = problem.A * u - problem.b;
         std::vector<Index> result;
         for (Index k = 0; k < problem.n_constrained(); ++k)
           {
@@ -211,8 +212,8 @@ namespace unilateral::lcp
       void
       count(const Index n_violated)
       {
-        fewest_so_far.push_back(
-          fewest_so_far.empty() ? n_violated :
+        fewest_so_far.push_back(fewest_so_far.empty() ?
+                                  n_violated :
                                   std::min(fewest_so_far.back(), n_violated));
       }
 
@@ -380,7 +381,7 @@ namespace unilateral::lcp
         info.label       = "PDAS";
         info.description = "primal-dual active set (Hintermueller et al.; "
                            "Ainsworth & Mihai), parameter tau";
-        info.subsection                   = "PDAS";
+        info.subsection  = "PDAS";
         info.default_iterations           = "500";
         info.is_default                   = true;
         info.needs_definite_matrix        = true;
@@ -395,7 +396,8 @@ namespace unilateral::lcp
         hand_over.when                  = Status::iteration_limit;
         hand_over.only_at_default_limit = true;
         hand_over.method                = "interior_point";
-        hand_over.settings = {{"Interior point/Variant", "predictor-corrector"}};
+        hand_over.settings              = {
+                       {"Interior point/Variant", "predictor-corrector"}};
         info.follow_ups.push_back(hand_over);
         // A system that stays singular means that no active set PDAS
         // tried holds every body: the LCP may have no solution at all,
@@ -519,8 +521,9 @@ namespace unilateral::lcp
             return reason;
         if (iteration >= limit)
           return "PDAS did not settle on an active set in " +
-                 quantity(limit, "iteration") + " (last change: " +
-                 std::to_string(violated.size()) + " indices)";
+                 quantity(limit, "iteration") +
+                 " (last change: " + std::to_string(violated.size()) +
+                 " indices)";
         return "";
       }
 
@@ -542,9 +545,9 @@ namespace unilateral::lcp
        * neighbours.
        */
       Change
-      change_active_set(const unsigned int        iteration,
-                        std::vector<Index>        violated,
-                        std::string              &stop)
+      change_active_set(const unsigned int iteration,
+                        std::vector<Index> violated,
+                        std::string       &stop)
       {
         Change change = Change::every_violated;
         if (iteration >= 1 && safeguards_on)
@@ -553,8 +556,8 @@ namespace unilateral::lcp
             if (history.without_progress > 0 &&
                 ++history.stalled > options.safeguard)
               {
-                change = resolve(history.cycle) ? Change::resolved :
-                                                  Change::least_index;
+                change          = resolve(history.cycle) ? Change::resolved :
+                                                           Change::least_index;
                 history.stalled = 0;
                 if (change == Change::least_index && stop_as_cycling)
                   {
@@ -695,7 +698,7 @@ namespace unilateral::lcp
       std::vector<Index>
       moved_by_free_motion()
       {
-        const Vector free_motion = system.near_null_direction(active);
+        const Vector       free_motion = system.near_null_direction(active);
         std::vector<Index> subset;
         if (free_motion.size() == problem.size())
           for (const Index i : problem.constrained)

@@ -10,7 +10,8 @@
  *   Step 4: the Newton system
  *             A du - dlambda = b - A u + lambda          (on S; = on E)
  *             lambda_i du_i + s_i dlambda_i = sigma mu - s_i lambda_i,
- *           solved as (A + diag_S(lambda / s)) du = r + (sigma mu / s - lambda);
+ *           solved as
+ *             (A + diag_S(lambda / s)) du = r + (sigma mu / s - lambda);
  *           (the paper prints the right-hand side of the last equation with
  *           the opposite sign; this is the Newton direction towards
  *           s_i lambda_i = sigma mu, which the step rule of Step 5 assumes)
@@ -30,9 +31,9 @@
  * on the boundary (the printed rule) makes the next Newton system singular,
  * the "unsolvable Step 4" the paper reports. 1 reproduces the printed rule.
  */
+#include <unilateral/base/input_error.h>
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/shifted_system.h>
-#include <unilateral/base/input_error.h>
 #include <unilateral/lcp/solver.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -135,7 +136,7 @@ namespace unilateral::lcp
         info.label       = "PDPC";
         info.description = "primal-dual predictor-corrector interior point "
                            "(Ainsworth & Mihai), with diagonal scaling";
-        info.subsection         = "PDPC";
+        info.subsection  = "PDPC";
         info.default_iterations = "500";
         info.exact              = false;
         return info;
@@ -213,8 +214,7 @@ namespace unilateral::lcp
         residual_norm = r.norm();
         // tol2 is absolute; never ask for less than the rounding floor of
         // the residual (epsilon times the terms that cancel).
-        floor =
-          100 * epsilon * (Au.norm() + problem.b.norm() + lambda.norm());
+        floor = 100 * epsilon * (Au.norm() + problem.b.norm() + lambda.norm());
       }
 
       /// Step 2, with the default tol1 (see above): a mean that no longer
@@ -224,9 +224,9 @@ namespace unilateral::lcp
       converged()
       {
         recent_mu.push_back(mu);
-        const std::size_t seen         = recent_mu.size();
-        const bool        gap_at_floor = default_gap && mu <= paper_gap &&
-                                  seen > 4 && mu > 0.5 * recent_mu[seen - 5];
+        const std::size_t seen  = recent_mu.size();
+        const bool gap_at_floor = default_gap && mu <= paper_gap && seen > 4 &&
+                                  mu > 0.5 * recent_mu[seen - 5];
         return (mu <= tol_gap || gap_at_floor) &&
                residual_norm <= std::max(tol_residual, floor);
       }

@@ -8,8 +8,8 @@
  *   Step 5: stop when ||u_old - u||_2 / ||u||_2 < tol.
  * Defaults omega = 2 / (1 + sin(pi / n)) and tol = n * machine epsilon.
  */
-#include <unilateral/lcp/active_set_system.h>
 #include <unilateral/base/input_error.h>
+#include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/solver.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -84,7 +84,7 @@ namespace unilateral::lcp
         // answer exact anyway.
         info.preferred_regularisation = 1e-2;
         info.warm_start               = true;
-        info.stationary              = true;
+        info.stationary               = true;
         return info;
       }
 
@@ -94,39 +94,37 @@ namespace unilateral::lcp
             Report        &report,
             std::ostream  *progress) override
       {
-        const Index  n      = problem.size();
-        const double pi     = std::acos(-1.0);
-        const double omega  = options.omega > 0 ?
-                                options.omega :
-                                (n > 1 ? 2.0 / (1.0 + std::sin(pi / n)) : 1.0);
-        const double tolerance =
-          options.tolerance > 0 ?
-            options.tolerance :
-            n * std::numeric_limits<double>::epsilon();
+        const Index  n         = problem.size();
+        const double pi        = std::acos(-1.0);
+        const double omega     = options.omega > 0 ?
+                                   options.omega :
+                                   (n > 1 ? 2.0 / (1.0 + std::sin(pi / n)) : 1.0);
+        const double tolerance = options.tolerance > 0 ?
+                                   options.tolerance :
+                                   n * std::numeric_limits<double>::epsilon();
 
         Vector &u = solution.u;
         if (u.size() != n)
           {
             u = Vector::Zero(n);
             for (Index k = 0; k < problem.n_constrained(); ++k)
-              u[problem.constrained[k]] =
-                std::max(0.0, problem.lower_bound[k]);
+              u[problem.constrained[k]] = std::max(0.0, problem.lower_bound[k]);
           }
 
         const Vector diagonal = problem.A.diagonal();
         for (const Index i : problem.constrained)
           if (!(diagonal[i] > 0))
             {
-              report.status = Status::singular;
+              report.status  = Status::singular;
               report.message = "PSOR needs A_ii > 0 on S, but A(" +
                                std::to_string(i) + "," + std::to_string(i) +
                                ") <= 0";
               return;
             }
 
-        const std::vector<char> in_S = problem.constrained_mask();
-        const bool has_free_part = problem.n_constrained() < n;
-        ActiveSetSystem free_part(problem.A, report.counters);
+        const std::vector<char> in_S          = problem.constrained_mask();
+        const bool              has_free_part = problem.n_constrained() < n;
+        ActiveSetSystem         free_part(problem.A, report.counters);
 
         const unsigned int limit = iteration_limit(100000);
         for (unsigned int sweep = 1;; ++sweep)
@@ -141,7 +139,8 @@ namespace unilateral::lcp
                 for (SparseMatrix::InnerIterator it(problem.A, i); it; ++it)
                   if (it.row() != i)
                     sigma += it.value() * u[it.row()];
-                const double gauss_seidel = (problem.b[i] - sigma) / diagonal[i];
+                const double gauss_seidel =
+                  (problem.b[i] - sigma) / diagonal[i];
                 u[i] = std::max((1 - omega) * u_old[i] + omega * gauss_seidel,
                                 problem.lower_bound[k]);
               }

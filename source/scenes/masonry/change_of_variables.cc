@@ -28,8 +28,8 @@ namespace unilateral::masonry
     {
     public:
       explicit DisjointSets(const std::size_t n)
-          : parent(n)
-          , size(n, 1)
+        : parent(n)
+        , size(n, 1)
       {
         std::iota(parent.begin(), parent.end(), std::size_t(0));
       }

@@ -10,7 +10,7 @@
 namespace unilateral::masonry
 {
   Discretisation::Discretisation(const ElementType element)
-      : element(element)
+    : element(element)
   {
     if (element == ElementType::q2)
       {

@@ -111,7 +111,7 @@ namespace unilateral::masonry
                   std::to_string(problem_sizes.n_dofs) +
                     " DOFs; detecting contacts");
     {
-      state->contacts  = detect_contacts(state->discretisation.dof_handler,
+      state->contacts = detect_contacts(state->discretisation.dof_handler,
                                         parameters.boundary.signorini_fraction,
                                         problem_sizes.gap,
                                         coincidence_tolerance());
@@ -171,8 +171,8 @@ namespace unilateral::masonry
     // Blocks are free to move unless contacts hold them, and a wall is in
     // contact almost everywhere: the solvers' automatic settings for both.
     // A~ = C~^-T A C~^-1 is a congruence of the semidefinite stiffness.
-    lcp_problem.floating_bodies              = true;
-    lcp_problem.mostly_active                = true;
+    lcp_problem.floating_bodies    = true;
+    lcp_problem.mostly_active      = true;
     lcp_problem.known_semidefinite = true;
 
     // The solvers' force unit (see force_unit()): their tolerances and
@@ -302,8 +302,7 @@ namespace unilateral::masonry
         << "), " << quantity(s.n_blocks, "block") << ", "
         << to_string(parameters.geometry.element) << " on "
         << quantity(s.n_cells, "cell") << " (refinement "
-        << parameters.geometry.refinement
-        << ", h = " << s.cell_size << ")\n"
+        << parameters.geometry.refinement << ", h = " << s.cell_size << ")\n"
         << "  supports: " << quantity(s.n_dirichlet, "Dirichlet DOF") << ", "
         << quantity(s.n_signorini, "Signorini node")
         << " with gap g = " << s.gap << "; joints: " << s.n_horizontal_joint
@@ -314,8 +313,7 @@ namespace unilateral::masonry
         << max_displacement << ", " << n_closed_contacts << " of "
         << quantity(s.n_constraints, "contact") << " closed\n";
     if (n_degenerate_contacts > 0)
-      out << "  "
-          << quantity(n_degenerate_contacts, "closed contact")
+      out << "  " << quantity(n_degenerate_contacts, "closed contact")
           << (n_degenerate_contacts == 1 ? " carries" : " carry")
           << " no force (degenerate): where such "
              "contacts alone hold a block, other displacements with the same "

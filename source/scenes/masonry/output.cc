@@ -27,10 +27,9 @@ namespace unilateral::masonry
     public:
       StressPostprocessor(const std::vector<MaterialClass> &classes,
                           const std::vector<unsigned int>  &class_of_block)
-          : classes(classes)
-          , class_of_block(class_of_block)
-      {
-      }
+        : classes(classes)
+        , class_of_block(class_of_block)
+      {}
 
       void
       evaluate_vector_field(

@@ -16,9 +16,8 @@ namespace unilateral::masonry
   struct MasonryScene::State
   {
     explicit State(const ElementType element)
-        : discretisation(element)
-    {
-    }
+      : discretisation(element)
+    {}
 
     Layout                             layout;
     std::vector<unsigned int>          class_of_block;

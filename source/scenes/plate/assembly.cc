@@ -61,8 +61,8 @@ namespace unilateral::plate
                  const FreeDofs              &free_dofs,
                  lcp::SparseMatrix           &matrix)
     {
-      const lcp::Index                n = free_dofs.size();
-      dealii::DynamicSparsityPattern  pattern(n, n);
+      const lcp::Index                             n = free_dofs.size();
+      dealii::DynamicSparsityPattern               pattern(n, n);
       std::vector<dealii::types::global_dof_index> local_dofs(
         fe::BognerFoxSchmit::dofs_per_cell);
       std::vector<dealii::types::global_dof_index> local_free;
@@ -75,11 +75,15 @@ namespace unilateral::plate
               local_free.push_back(free_dofs.index[dof]);
           std::sort(local_free.begin(), local_free.end());
           for (const auto row : local_free)
-            pattern.add_entries(row, local_free.begin(), local_free.end(), true);
+            pattern.add_entries(row,
+                                local_free.begin(),
+                                local_free.end(),
+                                true);
         }
 
       matrix.resize(n, n);
-      matrix.resizeNonZeros(static_cast<lcp::Index>(pattern.n_nonzero_elements()));
+      matrix.resizeNonZeros(
+        static_cast<lcp::Index>(pattern.n_nonzero_elements()));
       lcp::Index *outer = matrix.outerIndexPtr();
       lcp::Index *inner = matrix.innerIndexPtr();
       outer[0]          = 0;
@@ -121,14 +125,14 @@ namespace unilateral::plate
                         lcp::Vector                       &rhs)
   {
     make_pattern(dof_handler, free_dofs, matrix);
-    rhs = lcp::Vector::Zero(free_dofs.size());
+    rhs            = lcp::Vector::Zero(free_dofs.size());
     double *values = matrix.valuePtr();
 
     const std::vector<unsigned int> bfs_index =
       fe::bfs_local_indices(dof_handler.get_fe());
     constexpr unsigned int n_local = fe::BognerFoxSchmit::dofs_per_cell;
     std::vector<dealii::types::global_dof_index> local_dofs(n_local);
-    CellIntegralsCache cache(rigidity, poisson_ratio);
+    CellIntegralsCache                           cache(rigidity, poisson_ratio);
 
     auto force_at = [&](const dealii::Point<2> &p) {
       const double f = force.value(p);
@@ -136,7 +140,9 @@ namespace unilateral::plate
         {
           std::ostringstream message;
           message << force_description << ": evaluates to "
-                  << (std::isnan(f) ? "nan" : f > 0 ? "inf" : "-inf")
+                  << (std::isnan(f) ? "nan" :
+                      f > 0         ? "inf" :
+                                      "-inf")
                   << " at (" << p[0] << ", " << p[1]
                   << "); give a force that is finite on the whole plate";
           throw InputError(message.str());
@@ -147,7 +153,7 @@ namespace unilateral::plate
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         cell->get_dof_indices(local_dofs);
-        const fe::BognerFoxSchmit element   = cell_element(cell);
+        const fe::BognerFoxSchmit element = cell_element(cell);
         const CellIntegrals      &integrals =
           cache.get(element.size(0), element.size(1));
         const auto load = integrals.load(element.vertex(0), force_at);
@@ -161,7 +167,7 @@ namespace unilateral::plate
             rhs[row] += load[bi];
             for (unsigned int j = 0; j < n_local; ++j)
               {
-                const double     entry = integrals.stiffness(bi, bfs_index[j]);
+                const double     entry  = integrals.stiffness(bi, bfs_index[j]);
                 const lcp::Index column = free_dofs.index[local_dofs[j]];
                 if (column >= 0)
                   values[position(matrix, row, column)] += entry;

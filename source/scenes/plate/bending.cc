@@ -23,8 +23,8 @@ namespace unilateral::plate
     , h2(h2)
     , stiffness(n_dofs, n_dofs)
   {
-    const dealii::QGauss<2>     quadrature(n_gauss_points_1d);
-    const fe::BognerFoxSchmit   element(dealii::Point<2>(), h1, h2);
+    const dealii::QGauss<2>   quadrature(n_gauss_points_1d);
+    const fe::BognerFoxSchmit element(dealii::Point<2>(), h1, h2);
     std::array<dealii::Tensor<2, 2>, n_dofs> hessians;
 
     offsets.resize(quadrature.size());
@@ -33,17 +33,18 @@ namespace unilateral::plate
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
         const dealii::Point<2> &unit = quadrature.point(q);
-        offsets[q][0] = unit[0] * h1;
-        offsets[q][1] = unit[1] * h2;
-        JxW[q]        = quadrature.weight(q) * h1 * h2;
+        offsets[q][0]                = unit[0] * h1;
+        offsets[q][1]                = unit[1] * h2;
+        JxW[q]                       = quadrature.weight(q) * h1 * h2;
         const dealii::Point<2> x(offsets[q]);
         element.evaluate(x, &shape_values[q], nullptr, &hessians);
         for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = 0; j <= i; ++j)
-            stiffness(i, j) +=
-              bending_integrand(hessians[i], hessians[j], rigidity,
-                                poisson_ratio) *
-              JxW[q];
+            stiffness(i, j) += bending_integrand(hessians[i],
+                                                 hessians[j],
+                                                 rigidity,
+                                                 poisson_ratio) *
+                               JxW[q];
       }
     // Symmetric by construction, not by rounding.
     for (unsigned int i = 0; i < n_dofs; ++i)

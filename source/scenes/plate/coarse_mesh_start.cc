@@ -36,10 +36,10 @@ namespace unilateral::plate
   lcp::Solution
   PlateScene::coarse_mesh_start(const RunContext &context)
   {
-    Parameters coarse_parameters    = parameters;
-    Geometry  &coarse_geometry      = coarse_parameters.geometry;
-    coarse_geometry.n_x             = (parameters.geometry.n_x + 1) / 2;
-    coarse_geometry.n_y             = (parameters.geometry.n_y + 1) / 2;
+    Parameters coarse_parameters = parameters;
+    Geometry  &coarse_geometry   = coarse_parameters.geometry;
+    coarse_geometry.n_x          = (parameters.geometry.n_x + 1) / 2;
+    coarse_geometry.n_y          = (parameters.geometry.n_y + 1) / 2;
     PlateScene coarse(coarse_parameters);
     RunContext quiet; // the coarse levels' stages are this run's "solve"
     coarse.set_up(quiet);
@@ -47,9 +47,8 @@ namespace unilateral::plate
     if (coarse.uses_coarse_mesh_start(context))
       coarse.lcp_solution = coarse.coarse_mesh_start(context);
 
-    const lcp::Report report = lcp::solve_lcp(coarse.lcp_problem,
-                                              context.solver,
-                                              coarse.lcp_solution);
+    const lcp::Report report =
+      lcp::solve_lcp(coarse.lcp_problem, context.solver, coarse.lcp_solution);
     coarse_levels = coarse.coarse_levels;
     coarse_levels.insert(coarse_levels.begin(),
                          {coarse_geometry.n_x,
@@ -110,9 +109,9 @@ namespace unilateral::plate
             const lcp::Index free = fine.free_dofs.index[local_dofs[i]];
             if (free < 0)
               continue;
-            const dealii::Point<2> node   = cell->vertex(fine_bfs[i] / 4);
-            const auto coarse_cell = cell_at[column(node[0]) +
-                                             geometry.n_x * row(node[1])];
+            const dealii::Point<2> node = cell->vertex(fine_bfs[i] / 4);
+            const auto             coarse_cell =
+              cell_at[column(node[0]) + geometry.n_x * row(node[1])];
             const fe::BognerFoxSchmit element = cell_element(coarse_cell);
             const auto                coefficients =
               cell_coefficients(coarse_cell, coarse_bfs, coarse_values);
@@ -143,13 +142,13 @@ namespace unilateral::plate
     double largest_deflection = 0;
     for (const lcp::Index i : fine.lcp_problem.constrained)
       largest_deflection = std::max(largest_deflection, std::abs(u[i]));
-    const double h = std::max(fine.parameters.geometry.length_x /
-                                fine.parameters.geometry.n_x,
-                              fine.parameters.geometry.length_y /
-                                fine.parameters.geometry.n_y) /
-                     std::max(fine.parameters.geometry.length_x,
-                              fine.parameters.geometry.length_y);
-    const double contact_band = 2.4 * h * h * largest_deflection;
+    const double h =
+      std::max(fine.parameters.geometry.length_x / fine.parameters.geometry.n_x,
+               fine.parameters.geometry.length_y /
+                 fine.parameters.geometry.n_y) /
+      std::max(fine.parameters.geometry.length_x,
+               fine.parameters.geometry.length_y);
+    const double  contact_band = 2.4 * h * h * largest_deflection;
     lcp::Solution start;
     start.u = u;
     for (lcp::Index k = 0; k < fine.lcp_problem.n_constrained(); ++k)

@@ -73,20 +73,17 @@ namespace unilateral::plate
       {
         for (unsigned int q = 0; q < computed.size(); ++q)
           {
-            unsigned int c      = 0;
-            computed[q](c++)    = inputs.solution_gradients[q][0];
-            computed[q](c++)    = inputs.solution_gradients[q][1];
+            unsigned int c   = 0;
+            computed[q](c++) = inputs.solution_gradients[q][0];
+            computed[q](c++) = inputs.solution_gradients[q][1];
             if (obstacle != nullptr)
               {
-                const double psi =
-                  obstacle->value(inputs.evaluation_points[q]);
+                const double psi = obstacle->value(inputs.evaluation_points[q]);
                 computed[q](c++) = psi;
                 computed[q](c++) = inputs.solution_values[q] - psi;
               }
-            for (const double moment :
-                 bending_moments(inputs.solution_hessians[q],
-                                 rigidity,
-                                 poisson_ratio))
+            for (const double moment : bending_moments(
+                   inputs.solution_hessians[q], rigidity, poisson_ratio))
               computed[q](c++) = moment;
           }
       }
@@ -129,8 +126,8 @@ namespace unilateral::plate
       fe::bfs_local_indices(dof_handler.get_fe());
 
     // The deflection in FE_Q(3).
-    const dealii::FE_Q<2>  fe_cubic(3);
-    dealii::DoFHandler<2>  cubic_dofs(triangulation);
+    const dealii::FE_Q<2> fe_cubic(3);
+    dealii::DoFHandler<2> cubic_dofs(triangulation);
     cubic_dofs.distribute_dofs(fe_cubic);
     dealii::Vector<double> deflection(cubic_dofs.n_dofs());
     {
@@ -148,9 +145,10 @@ namespace unilateral::plate
           cubic_cell->get_dof_indices(cubic_local);
           for (unsigned int k = 0; k < unit_points.size(); ++k)
             {
-              const dealii::Point<2> x(
-                element.vertex(0)[0] + unit_points[k][0] * element.size(0),
-                element.vertex(0)[1] + unit_points[k][1] * element.size(1));
+              const dealii::Point<2> x(element.vertex(0)[0] +
+                                         unit_points[k][0] * element.size(0),
+                                       element.vertex(0)[1] +
+                                         unit_points[k][1] * element.size(1));
               deflection[cubic_local[k]] = element.value(coefficients, x);
             }
         }
@@ -172,7 +170,7 @@ namespace unilateral::plate
     const dealii::FE_Q<2> fe_linear(1);
     dealii::DoFHandler<2> linear_dofs(triangulation);
     linear_dofs.distribute_dofs(fe_linear);
-    const unsigned int n = linear_dofs.n_dofs();
+    const unsigned int     n = linear_dofs.n_dofs();
     dealii::Vector<double> w(n), w_x(n), w_y(n), w_xy(n), psi(n), gap(n),
       contact(n), contact_force(n);
 
@@ -184,7 +182,7 @@ namespace unilateral::plate
         active[i] = 1;
       for (std::size_t k = 0; k < bound_vertex.size(); ++k)
         {
-          const lcp::Index i = lcp_problem.constrained[k];
+          const lcp::Index i                 = lcp_problem.constrained[k];
           force_at_vertex[bound_vertex[k]]   = lcp_solution.lambda[i];
           contact_at_vertex[bound_vertex[k]] = active[i];
         }
@@ -197,12 +195,12 @@ namespace unilateral::plate
           &triangulation, cell->level(), cell->index(), &linear_dofs);
         for (unsigned int v = 0; v < 4; ++v)
           {
-            using Element        = fe::BognerFoxSchmit;
-            const auto         i = linear_cell->vertex_dof_index(v, 0);
+            using Element             = fe::BognerFoxSchmit;
+            const auto         i      = linear_cell->vertex_dof_index(v, 0);
             const unsigned int vertex = cell->vertex_index(v);
-            w[i]    = coefficients[Element::local_index(v, Element::deflection)];
-            w_x[i]  = coefficients[Element::local_index(v, Element::slope_x)];
-            w_y[i]  = coefficients[Element::local_index(v, Element::slope_y)];
+            w[i]   = coefficients[Element::local_index(v, Element::deflection)];
+            w_x[i] = coefficients[Element::local_index(v, Element::slope_x)];
+            w_y[i] = coefficients[Element::local_index(v, Element::slope_y)];
             w_xy[i] = coefficients[Element::local_index(v, Element::twist)];
             if (obstacle != nullptr)
               {

@@ -123,10 +123,11 @@ namespace unilateral::plate
                       "100",
                       dealii::Patterns::Double(),
                       "L2 (mm); > 0.");
-    prm.declare_entry("Thickness",
-                      "2",
-                      dealii::Patterns::Double(),
-                      "t (mm); > 0. Enters through D = E t^3 / (12 (1 - nu^2)).");
+    prm.declare_entry(
+      "Thickness",
+      "2",
+      dealii::Patterns::Double(),
+      "t (mm); > 0. Enters through D = E t^3 / (12 (1 - nu^2)).");
     prm.declare_entry("Elements x",
                       "20",
                       dealii::Patterns::Integer(),
@@ -150,24 +151,30 @@ namespace unilateral::plate
   Geometry::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    length_x  = prm.get_double("Length x");
-    length_y  = prm.get_double("Length y");
-    thickness = prm.get_double("Thickness");
+    length_x      = prm.get_double("Length x");
+    length_y      = prm.get_double("Length y");
+    thickness     = prm.get_double("Thickness");
     const long n1 = prm.get_integer("Elements x");
     const long n2 = prm.get_integer("Elements y");
     clamp_twist   = prm.get("Boundary condition") == "fully clamped";
     prm.leave_subsection();
 
     const std::string section = "Plate/Geometry";
-    check_parameter(length_x > 0, section, "Length x", length_x,
-                    "must be > 0 (mm)");
-    check_parameter(length_y > 0, section, "Length y", length_y,
-                    "must be > 0 (mm)");
-    check_parameter(thickness > 0, section, "Thickness", thickness,
-                    "must be > 0 (mm)");
-    check_parameter(n1 >= 1 && n1 <= 100000, section, "Elements x", n1,
+    check_parameter(
+      length_x > 0, section, "Length x", length_x, "must be > 0 (mm)");
+    check_parameter(
+      length_y > 0, section, "Length y", length_y, "must be > 0 (mm)");
+    check_parameter(
+      thickness > 0, section, "Thickness", thickness, "must be > 0 (mm)");
+    check_parameter(n1 >= 1 && n1 <= 100000,
+                    section,
+                    "Elements x",
+                    n1,
                     "must be an integer between 1 and 100000");
-    check_parameter(n2 >= 1 && n2 <= 100000, section, "Elements y", n2,
+    check_parameter(n2 >= 1 && n2 <= 100000,
+                    section,
+                    "Elements y",
+                    n2,
                     "must be an integer between 1 and 100000");
     n_x = static_cast<unsigned int>(n1);
     n_y = static_cast<unsigned int>(n2);
@@ -204,8 +211,8 @@ namespace unilateral::plate
   Material::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    name                 = prm.get("Name");
-    const double E_given = prm.get_double("Young's modulus");
+    name                  = prm.get("Name");
+    const double E_given  = prm.get_double("Young's modulus");
     const double nu_given = prm.get_double("Poisson's ratio");
     prm.leave_subsection();
 
@@ -233,13 +240,21 @@ namespace unilateral::plate
           }
         return;
       }
-    check_parameter(name == "custom", section, "Name", name,
+    check_parameter(name == "custom",
+                    section,
+                    "Name",
+                    name,
                     "unknown material; choose steel, bronze, lead, or custom "
                     "with 'Young's modulus' and 'Poisson's ratio'");
-    check_parameter(E_given > 0, section, "Young's modulus", E_given,
+    check_parameter(E_given > 0,
+                    section,
+                    "Young's modulus",
+                    E_given,
                     "must be > 0 (kg/mm^2)");
-    check_parameter(nu_given > -1 && nu_given < 0.5, section,
-                    "Poisson's ratio", nu_given,
+    check_parameter(nu_given > -1 && nu_given < 0.5,
+                    section,
+                    "Poisson's ratio",
+                    nu_given,
                     "must lie in (-1, 0.5) for an isotropic elastic plate");
     youngs_modulus = E_given;
     poisson_ratio  = nu_given;
@@ -321,7 +336,10 @@ namespace unilateral::plate
     prm.enter_subsection("Output");
     const long n = prm.get_integer("Subdivisions");
     prm.leave_subsection();
-    check_parameter(n >= 1 && n <= 32, "Plate/Output", "Subdivisions", n,
+    check_parameter(n >= 1 && n <= 32,
+                    "Plate/Output",
+                    "Subdivisions",
+                    n,
                     "must be an integer between 1 and 32");
     subdivisions = static_cast<unsigned int>(n);
   }

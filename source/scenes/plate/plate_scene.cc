@@ -90,9 +90,9 @@ namespace unilateral::plate
         cell->get_dof_indices(local_dofs);
         for (unsigned int i = 0; i < local_dofs.size(); ++i)
           {
-            const unsigned int vertex = bfs_index[i] / 4;
+            const unsigned int vertex    = bfs_index[i] / 4;
             const unsigned int component = bfs_index[i] % 4;
-            const lcp::Index   free = free_dofs.index[local_dofs[i]];
+            const lcp::Index   free      = free_dofs.index[local_dofs[i]];
             if (component != fe::BognerFoxSchmit::deflection || free < 0 ||
                 seen[cell->vertex_index(vertex)])
               continue;
@@ -120,7 +120,9 @@ namespace unilateral::plate
             std::ostringstream message;
             message << "parameter 'Plate/Obstacle/Function' = "
                     << parameters.obstacle.name << ": evaluates to "
-                    << (std::isnan(psi) ? "nan" : psi > 0 ? "inf" : "-inf")
+                    << (std::isnan(psi) ? "nan" :
+                        psi > 0         ? "inf" :
+                                          "-inf")
                     << " at the node (" << vertices[vertex][0] << ", "
                     << vertices[vertex][1]
                     << "); give an obstacle that is finite at every node";
@@ -167,32 +169,34 @@ namespace unilateral::plate
 
     plate_results.n_elements = triangulation.n_active_cells();
     plate_results.n_free     = static_cast<unsigned int>(lcp_problem.size());
-    plate_results.n_bounds   = static_cast<unsigned int>(lcp_problem.n_constrained());
-    plate_results.n_contact  = report.n_active;
-    plate_results.rigidity   = rigidity;
+    plate_results.n_bounds =
+      static_cast<unsigned int>(lcp_problem.n_constrained());
+    plate_results.n_contact = report.n_active;
+    plate_results.rigidity  = rigidity;
 
     const std::vector<unsigned int> bfs_index =
       fe::bfs_local_indices(dof_handler.get_fe());
     const dealii::Point<2> centre(parameters.geometry.length_x / 2,
                                   parameters.geometry.length_y / 2);
     plate_results.min_deflection = std::numeric_limits<double>::infinity();
-    bool centre_found       = false;
+    bool centre_found            = false;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const auto coefficients =
           cell_coefficients(cell, bfs_index, dof_values);
         for (unsigned int v = 0; v < 4; ++v)
-          plate_results.min_deflection = std::min(
-            plate_results.min_deflection,
-            coefficients[fe::BognerFoxSchmit::local_index(v, 0)]);
+          plate_results.min_deflection =
+            std::min(plate_results.min_deflection,
+                     coefficients[fe::BognerFoxSchmit::local_index(v, 0)]);
         const fe::BognerFoxSchmit element = cell_element(cell);
         const dealii::Point<2>    upper   = element.vertex(3);
         if (!centre_found && element.vertex(0)[0] <= centre[0] &&
             centre[0] <= upper[0] && element.vertex(0)[1] <= centre[1] &&
             centre[1] <= upper[1])
           {
-            plate_results.centre_deflection = element.value(coefficients, centre);
-            centre_found               = true;
+            plate_results.centre_deflection =
+              element.value(coefficients, centre);
+            centre_found = true;
           }
       }
   }
@@ -200,32 +204,32 @@ namespace unilateral::plate
   void
   PlateScene::print_summary(std::ostream &out, const lcp::Report &report) const
   {
-    const Geometry &geometry = parameters.geometry;
-    const Material &material = parameters.material;
-    const auto      flags    = out.flags();
+    const Geometry &geometry  = parameters.geometry;
+    const Material &material  = parameters.material;
+    const auto      flags     = out.flags();
     const auto      precision = out.precision();
     // The solver's progress lines share this stream and its format state.
     out << std::defaultfloat << std::setprecision(6);
     out << "  plate " << geometry.length_x << " x " << geometry.length_y
-        << " mm, t = " << geometry.thickness << " mm, " << geometry.n_x
-        << " x " << geometry.n_y << " Bogner-Fox-Schmit elements, "
+        << " mm, t = " << geometry.thickness << " mm, " << geometry.n_x << " x "
+        << geometry.n_y << " Bogner-Fox-Schmit elements, "
         << (geometry.clamp_twist ? "fully clamped" : "clamped (w_xy free)")
         << "\n"
-        << "  material " << material.name << ": E = "
-        << material.youngs_modulus << " kg/mm^2, nu = "
-        << material.poisson_ratio << ", D = " << rigidity << " kg mm\n"
+        << "  material " << material.name << ": E = " << material.youngs_modulus
+        << " kg/mm^2, nu = " << material.poisson_ratio << ", D = " << rigidity
+        << " kg mm\n"
         << "  obstacle " << parameters.obstacle.name << ", force "
         << parameters.load.name << "\n"
-        << "  |J| = " << plate_results.n_free << " free DOFs, |J1| = "
-        << plate_results.n_bounds << " bounded nodes\n";
+        << "  |J| = " << plate_results.n_free
+        << " free DOFs, |J1| = " << plate_results.n_bounds
+        << " bounded nodes\n";
     print_solver_summary(out, lcp_problem, report);
     if (!coarse_levels.empty())
       {
         out << "  started from the solution on";
         for (const CoarseLevel &level : coarse_levels)
           out << (&level == &coarse_levels.front() ? " " : ", ") << level.n_x
-              << " x " << level.n_y << " (" << level.iterations
-              << " iterations"
+              << " x " << level.n_y << " (" << level.iterations << " iterations"
               << (level.status == lcp::Status::converged ?
                     "" :
                     ", " + lcp::to_string(level.status))
@@ -233,10 +237,9 @@ namespace unilateral::plate
         out << "\n";
       }
     out << "  contact nodes cn = " << plate_results.n_contact << "\n"
-        << std::scientific << std::setprecision(6)
-        << "  min nodal deflection " << plate_results.min_deflection
-        << " mm, centre deflection " << plate_results.centre_deflection << " mm"
-        << std::endl;
+        << std::scientific << std::setprecision(6) << "  min nodal deflection "
+        << plate_results.min_deflection << " mm, centre deflection "
+        << plate_results.centre_deflection << " mm" << std::endl;
     out.flags(flags);
     out.precision(precision);
   }

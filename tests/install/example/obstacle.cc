@@ -52,8 +52,8 @@ main()
   Triangulation<2> triangulation;
   GridGenerator::hyper_cube(triangulation, -1, 1);
   triangulation.refine_global(5);
-  const FE_Q<2>  fe(1);
-  DoFHandler<2>  dof_handler(triangulation);
+  const FE_Q<2> fe(1);
+  DoFHandler<2> dof_handler(triangulation);
   dof_handler.distribute_dofs(fe);
 
   DynamicSparsityPattern dsp(dof_handler.n_dofs());
@@ -77,7 +77,7 @@ main()
 
   // The LCP: A and b from deal.II's matrix and vector, a bound at every
   // interior node.
-  unilateral::lcp::Problem problem;
+  unilateral::lcp::Problem                                    problem;
   std::vector<Eigen::Triplet<double, unilateral::lcp::Index>> entries;
   for (const auto &entry : matrix)
     entries.emplace_back(entry.row(), entry.column(), entry.value());
@@ -108,13 +108,13 @@ main()
 
   const double contact_fraction =
     double(report.n_active) / problem.n_constrained();
-  std::cout << "obstacle problem, " << problem.size() << " unknowns: "
-            << unilateral::lcp::to_string(report.status) << "\n"
+  std::cout << "obstacle problem, " << problem.size()
+            << " unknowns: " << unilateral::lcp::to_string(report.status)
+            << "\n"
             << "relative KKT residuals <= 1e-10: "
             << yes_no(report.kkt.max() <= 1e-10) << "\n"
             << "the membrane lies on the obstacle at 20 to 40 % of the nodes: "
-            << yes_no(contact_fraction > 0.2 && contact_fraction < 0.4)
-            << "\n"
+            << yes_no(contact_fraction > 0.2 && contact_fraction < 0.4) << "\n"
             << "nowhere below it: "
             << yes_no(report.kkt.primal_feasibility <= 1e-12) << "\n";
   return report.converged() ? 0 : 1;

@@ -179,6 +179,6 @@ namespace unilateral::masonry
     double                        unit              = 1;
     unsigned int                  n_closed_contacts = 0;
     /// Closed without force (see postprocess).
-    unsigned int                  n_degenerate_contacts = 0;
+    unsigned int n_degenerate_contacts = 0;
   };
 } // namespace unilateral::masonry

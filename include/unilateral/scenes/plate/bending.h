@@ -19,7 +19,9 @@ namespace unilateral::plate
 {
   /// D = E t^3 / (12 (1 - nu^2)), eq. (17).
   double
-  flexural_rigidity(double youngs_modulus, double poisson_ratio, double thickness);
+  flexural_rigidity(double youngs_modulus,
+                    double poisson_ratio,
+                    double thickness);
 
   /**
    * The integrand of the bending form (15) for Hessians hz, hw:
@@ -82,9 +84,9 @@ namespace unilateral::plate
 
     /// Quadrature points relative to the cell's lower-left corner, weights
     /// times the cell area, and shape_values[q][i] = phi_i(x_q).
-    std::vector<dealii::Tensor<1, 2>>                         offsets;
-    std::vector<double>                                       JxW;
-    std::vector<std::array<double, n_dofs>>                   shape_values;
+    std::vector<dealii::Tensor<1, 2>>       offsets;
+    std::vector<double>                     JxW;
+    std::vector<std::array<double, n_dofs>> shape_values;
 
     /**
      * F^e_i = int f phi_i over the cell with lower-left corner
@@ -120,8 +122,8 @@ namespace unilateral::plate
     get(double h1, double h2);
 
   private:
-    double                     rigidity;
-    double                     poisson_ratio;
+    double                    rigidity;
+    double                    poisson_ratio;
     std::deque<CellIntegrals> entries; // references stay valid on growth
   };
 } // namespace unilateral::plate

@@ -100,11 +100,11 @@ namespace unilateral::plate
 
   struct Parameters
   {
-    Geometry        geometry;
-    Material        material;
-    Obstacle        obstacle;
-    Load            load;
-    Output          output;
+    Geometry geometry;
+    Material material;
+    Obstacle obstacle;
+    Load     load;
+    Output   output;
     /// Plate/Coarse-mesh start: for methods that take a start, solve on
     /// coarser meshes first.
     bool coarse_mesh_start = true;
