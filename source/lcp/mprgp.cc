@@ -1,0 +1,161 @@
+#include <unilateral/lcp/mprgp.h>
+
+#include <cmath>
+#include <limits>
+
+namespace unilateral::lcp
+{
+  Mprgp::Mprgp(Operator     H,
+               Vector       r,
+               Vector       lower,
+               const double alpha_bar,
+               const double gamma)
+    : H(std::move(H))
+    , r(std::move(r))
+    , lower(std::move(lower))
+    , alpha_bar(alpha_bar)
+    , gamma(gamma)
+  {}
+
+  Vector
+  Mprgp::free_gradient(const Vector &x) const
+  {
+    Vector phi = g;
+    for (Index i = 0; i < x.size(); ++i)
+      if (!(x[i] > lower[i]))
+        phi[i] = 0;
+    return phi;
+  }
+
+  Vector
+  Mprgp::chopped_gradient(const Vector &x) const
+  {
+    Vector beta = Vector::Zero(x.size());
+    for (Index i = 0; i < x.size(); ++i)
+      if (!(x[i] > lower[i]))
+        beta[i] = std::min(g[i], 0.0);
+    return beta;
+  }
+
+  Vector
+  Mprgp::projected_gradient(const Vector &x) const
+  {
+    return free_gradient(x) + chopped_gradient(x);
+  }
+
+  double
+  Mprgp::reduced_times_free(const Vector &x, const Vector &phi) const
+  {
+    double result = 0;
+    for (Index i = 0; i < x.size(); ++i)
+      {
+        const double reduced =
+          std::isfinite(lower[i]) ?
+            std::min((x[i] - lower[i]) / alpha_bar, phi[i]) :
+            phi[i];
+        result += reduced * phi[i];
+      }
+    return result;
+  }
+
+  double
+  Mprgp::feasible_step(const Vector &x, const Vector &d) const
+  {
+    double alpha = std::numeric_limits<double>::infinity();
+    for (Index i = 0; i < x.size(); ++i)
+      if (d[i] > 0 && std::isfinite(lower[i]))
+        alpha = std::min(alpha, (x[i] - lower[i]) / d[i]);
+    return alpha;
+  }
+
+  void
+  Mprgp::project(Vector &x) const
+  {
+    x = x.cwiseMax(lower);
+  }
+
+  Vector
+  Mprgp::product(const Vector &d)
+  {
+    Vector y;
+    H(d, y);
+    ++n_products;
+    return y;
+  }
+
+  void
+  Mprgp::restart(const Vector &x)
+  {
+    g = product(x) - r;
+    p = free_gradient(x);
+  }
+
+  // The iterate is proportional: a conjugate gradient step on the free set,
+  // or an expansion where that would leave the feasible set (to the
+  // boundary, then a projected gradient step of fixed length that can add
+  // active constraints). False if p^T H p <= 0.
+  bool
+  Mprgp::conjugate_gradient_or_expansion(Vector &x)
+  {
+    const Vector Hp  = product(p);
+    const double pHp = p.dot(Hp);
+    if (!(pHp > 0))
+      return false;
+    const double alpha_cg = g.dot(p) / pHp;
+    const double alpha_f  = feasible_step(x, p);
+    if (alpha_cg <= alpha_f)
+      {
+        x -= alpha_cg * p;
+        g -= alpha_cg * Hp;
+        const Vector phi = free_gradient(x);
+        p                = phi - (phi.dot(Hp) / pHp) * p;
+        return true;
+      }
+    x -= alpha_f * p;
+    g -= alpha_f * Hp;
+    x -= alpha_bar * free_gradient(x);
+    project(x);
+    restart(x);
+    return true;
+  }
+
+  // Proportioning: along the chopped gradient @p beta, releasing constraints
+  // whose multipliers are negative. False if beta^T H beta <= 0.
+  bool
+  Mprgp::proportioning(Vector &x, const Vector &beta)
+  {
+    const Vector Hd  = product(beta);
+    const double dHd = beta.dot(Hd);
+    if (!(dHd > 0))
+      return false;
+    const double alpha = g.dot(beta) / dHd;
+    x -= alpha * beta;
+    g -= alpha * Hd;
+    p = free_gradient(x);
+    return true;
+  }
+
+  Mprgp::Outcome
+  Mprgp::solve(Vector &x, const Stop &stop, const unsigned int max_steps)
+  {
+    project(x);
+    restart(x);
+    for (n_steps = 0;; ++n_steps)
+      {
+        const Vector phi                = free_gradient(x);
+        const Vector beta               = chopped_gradient(x);
+        const double projected_gradient = (phi + beta).norm();
+        if (!std::isfinite(projected_gradient))
+          return Outcome::diverged;
+        if (stop(projected_gradient))
+          return Outcome::converged;
+        if (n_steps >= max_steps)
+          return Outcome::iteration_limit;
+        const bool proportional =
+          beta.squaredNorm() <= gamma * gamma * reduced_times_free(x, phi);
+        if (!(proportional ? conjugate_gradient_or_expansion(x) :
+                             proportioning(x, beta)))
+          return Outcome::not_definite;
+      }
+  }
+} // namespace unilateral::lcp
