@@ -592,7 +592,13 @@ def judge(spec, run):
             return ("OK", "an honest refusal") if one_line else (
                 "WEAK", "refused, but not in one line")
         if code in spec["honest"]:
-            return "WEAK", "no converged answer (exit code 2)"
+            # Data double precision cannot resolve, refused with the reason
+            # on one line of stderr, is the honest answer the issue asks for.
+            explained = (len(lines) == 1 and
+                         "double precision" in run["stderr"])
+            return (("OK", "an honest refusal: beyond double precision "
+                     "(exit code 2)") if explained else
+                    ("WEAK", "no converged answer (exit code 2)"))
         passed, note = check(run)
         return ("OK" if passed else "WRONG"), note
     if code not in spec["codes"]:

@@ -22,6 +22,22 @@ namespace unilateral::lcp
     /// retry of a method that met a singular matrix where none was expected.
     constexpr double floating_bodies_regularisation = 1e-9;
 
+    /// d |l|_inf / |b|_inf where bodies can float: how far the bounds let
+    /// the bodies move as rigid bodies, against the elastic displacements
+    /// the loads cause (0 where that means nothing).
+    double
+    rigid_to_elastic(const Problem &problem)
+    {
+      const double loads  = problem.b.lpNorm<Eigen::Infinity>();
+      const double bounds = problem.n_constrained() > 0 ?
+                              problem.lower_bound.lpNorm<Eigen::Infinity>() :
+                              0.0;
+      const double stiffness =
+        problem.size() > 0 ? std::abs(problem.A.diagonal().mean()) : 0.0;
+      return problem.floating_bodies && loads > 0 ? stiffness * bounds / loads :
+                                                    0.0;
+    }
+
     /**
      * 'Regularisation = auto' where bodies can float: 1e-9, unless that
      * would hold them. A + eps d I ties every body to its place by a spring
@@ -37,18 +53,33 @@ namespace unilateral::lcp
     double
     floating_bodies_eps(const Problem &problem)
     {
-      const double loads  = problem.b.lpNorm<Eigen::Infinity>();
-      const double bounds = problem.n_constrained() > 0 ?
-                              problem.lower_bound.lpNorm<Eigen::Infinity>() :
-                              0.0;
-      const double spring_at_bounds =
-        (problem.size() > 0 ? std::abs(problem.A.diagonal().mean()) : 0.0) *
-        bounds;
-      if (!(spring_at_bounds > 0) || !(loads > 0))
+      const double ratio = rigid_to_elastic(problem);
+      if (!(ratio > 0))
         return floating_bodies_regularisation;
-      return std::clamp(1e-2 * loads / spring_at_bounds,
-                        1e-14,
-                        floating_bodies_regularisation);
+      return std::clamp(1e-2 / ratio, 1e-14, floating_bodies_regularisation);
+    }
+
+    /**
+     * Where a run did not converge and the bodies' rigid motions dwarf their
+     * elastic deformation beyond what double precision resolves to the KKT
+     * tolerance (see check_balance), that is the likely cause: say so.
+     */
+    void
+    explain_unresolvable(const Problem          &problem,
+                         const SolverParameters &parameters,
+                         Report                 &report)
+    {
+      const double ratio = rigid_to_elastic(problem);
+      if (report.converged() ||
+          !(std::numeric_limits<double>::epsilon() * ratio >
+            parameters.kkt_tolerance))
+        return;
+      std::ostringstream hint;
+      hint << std::setprecision(3) << "; the bounds let bodies move " << ratio
+           << " times as far as the loads deform them, more than double "
+              "precision resolves to 'KKT tolerance': give the loads, the "
+              "stiffness and the gaps in units closer to each other";
+      report.message += hint.str();
     }
 
     /**
@@ -507,6 +538,7 @@ namespace unilateral::lcp
     // Release the last factorisation (it can be large) before returning.
     solution.factor.reset();
     assess_answer(problem, parameters.kkt_tolerance, solution, report);
+    explain_unresolvable(problem, parameters, report);
     return report;
   }
 } // namespace unilateral::lcp
