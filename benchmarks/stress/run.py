@@ -116,8 +116,8 @@ def masonry(geometry="stack bond", m=5, relative_gap=0.5, E=4e3, nu=0.3,
             "Masonry/Refinement": refinement,
             "Masonry/Boundary conditions/Relative gap": repr(relative_gap),
             "Masonry/Boundary conditions/Gravity": repr(float(gravity)),
-            "Masonry/Boundary conditions/Top traction":
-                f"{traction[0]!r}, {traction[1]!r}",
+            "Masonry/Boundary conditions/Traction":
+                f"{traction[0]!r}; {traction[1]!r}",
             "Masonry/Materials/Young's modulus": repr(float(E)),
             "Masonry/Materials/Poisson's ratio": repr(float(nu))}
 

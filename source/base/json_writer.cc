@@ -50,6 +50,24 @@ namespace unilateral
   }
 
   JsonObject &
+  JsonObject::set(const std::string &key, const std::vector<double> &numbers)
+  {
+    std::ostringstream text;
+    text << std::setprecision(17) << "[";
+    for (std::size_t k = 0; k < numbers.size(); ++k)
+      {
+        text << (k > 0 ? ", " : "");
+        if (std::isfinite(numbers[k]))
+          text << numbers[k];
+        else
+          text << "null";
+      }
+    text << "]";
+    set_raw(key, text.str());
+    return *this;
+  }
+
+  JsonObject &
   JsonObject::set(const std::string &key, const double value)
   {
     // JSON has no NaN or infinity: write null so readers fail loudly on use.

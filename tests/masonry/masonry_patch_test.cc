@@ -91,7 +91,7 @@ namespace
         << "  set Refinement = " << c.refinement << "\n"
         << "  subsection Boundary conditions\n"
         << "    set Relative gap = 0\n"
-        << "    set Top traction = 0, " << c.top_traction_y << "\n"
+        << "    set Traction = 0; " << c.top_traction_y << "\n"
         << "  end\n"
         << "  subsection Materials\n";
     if (c.two_materials)
@@ -146,7 +146,8 @@ namespace
     for (const auto &constraint : run.scene->constraint_results())
       {
         largest_gap = std::max(largest_gap, std::abs(constraint.normal_gap));
-        if (constraint.kind == ConstraintKind::horizontal_joint)
+        if (constraint.kind == ConstraintKind::joint &&
+            std::abs(constraint.normal[1]) == 1)
           joint_force[std::lround(constraint.position[1] * c.m)] +=
             constraint.contact_force;
         if (constraint.kind == ConstraintKind::signorini)

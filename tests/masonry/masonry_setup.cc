@@ -125,8 +125,8 @@ namespace
                             const unsigned int m,
                             const std::string &element)
   {
-    MasonryScene scene(parse(prm_text(geometry, m, element)).parameters);
-    RunContext   context;
+    MasonryScene<2> scene(parse(prm_text(geometry, m, element)).parameters);
+    RunContext      context;
     scene.set_up(context);
     const Sizes &s        = scene.sizes();
     const auto  &change   = scene.change_of_variables();
@@ -139,27 +139,50 @@ namespace
       v = uniform(random);
     const std::vector<double> u = change.to_physical(new_variables.data());
 
+    // n . u at a node, and n . (u_upper - u_lower) for a joint.
+    auto along = [&](const std::array<double, 2> &n, const unsigned int node) {
+      return n[0] * u[contacts.node_dofs[node][0]] +
+             n[1] * u[contacts.node_dofs[node][1]];
+    };
     bool              rows_match = true;
     std::vector<char> owned(change.n_unknowns(), 0);
     for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
       {
-        const UnilateralConstraint &c = contacts.constraints[k];
-        const double value            = c.kind == ConstraintKind::signorini ?
-                                          u[c.lower] :
-                                          u[c.upper] - u[c.lower];
-        const int    v                = change.variable_of_constraint(k);
-        rows_match = rows_match && std::abs(value - new_variables[v]) < 1e-13;
-        rows_match = rows_match && !owned[v]; // owners are distinct
-        owned[v]   = 1;
+        const UnilateralConstraint<2> &c = contacts.constraints[k];
+        const double                   value =
+          c.kind == ConstraintKind::signorini ?
+                              along(c.normal, c.lower) :
+                              along(c.normal, c.upper) - along(c.normal, c.lower);
+        const int v = change.variable_of_constraint(k);
+        rows_match  = rows_match && std::abs(value - new_variables[v]) < 1e-13;
+        rows_match  = rows_match && !owned[v]; // owners are distinct
+        owned[v]    = 1;
       }
-    bool others_match = true;
+    // Supports: held nodes at zero, rollers with zero normal displacement
+    // and no variable; every other DOF not owned by a constraint is its own
+    // variable.
+    bool              others_match = true;
+    std::vector<char> eliminated(u.size(), 0);
+    for (const auto &held : contacts.held)
+      for (const DofIndex dof : contacts.node_dofs[held.node])
+        {
+          eliminated[dof] = 1;
+          others_match =
+            others_match && u[dof] == 0 && change.variable_of_dof(dof) == -1;
+        }
+    for (const auto &roller : contacts.rollers)
+      {
+        others_match = others_match && along(roller.normal, roller.node) == 0;
+        for (const DofIndex dof : contacts.node_dofs[roller.node])
+          if (change.variable_of_dof(dof) == -1)
+            eliminated[dof] = 1;
+      }
     for (DofIndex i = 0; i < u.size(); ++i)
       {
         const int v = change.variable_of_dof(i);
-        if (contacts.dirichlet[i])
-          others_match = others_match && u[i] == 0 && v == -1;
-        else if (!owned[v])
-          others_match = others_match && u[i] == new_variables[v];
+        if (!eliminated[i])
+          others_match =
+            others_match && v >= 0 && (owned[v] || u[i] == new_variables[v]);
       }
     std::cout << "  " << geometry << ", m = " << m << ", " << element
               << " (longest expansion " << s.max_expansion_length
@@ -194,7 +217,7 @@ namespace
     overlapping.course_height = 0.5;
     overlapping.blocks        = {{0, 0, 1, 0.5}, {0.5, 0.25, 1, 1}};
     expect_error("overlapping blocks", [&]() {
-      MasonryScene(parameters, overlapping).set_up(context);
+      MasonryScene<2>(parameters, overlapping).set_up(context);
     });
 
     // A wide block under two blocks of widths 0.45 and 0.55: with h = 0.25
@@ -206,27 +229,36 @@ namespace
                                   {0, 0.25, 0.45, 0.5},
                                   {0.45, 0.25, 1, 0.5}};
     expect_error("non-matching nodes", [&]() {
-      MasonryScene(parameters, non_matching).set_up(context);
+      MasonryScene<2>(parameters, non_matching).set_up(context);
     });
 
-    // Dependent rows, on a bare graph of 3 DOFs.
-    auto describe = [](const DofIndex i) { return "DOF " + std::to_string(i); };
-    const std::vector<char> none(3, 0);
+    // Dependent rows, on a bare graph of 3 nodes (DOFs 2i, 2i + 1).
+    auto describe = [](const unsigned int i) {
+      return "node " + std::to_string(i);
+    };
+    const std::vector<std::array<DofIndex, 2>> nodes = {{{0, 1}},
+                                                        {{2, 3}},
+                                                        {{4, 5}}};
+    const Direction<2>                         up    = {{0, 1}};
     expect_error("a cycle of joints", [&]() {
-      ChangeOfVariables(3,
-                        none,
-                        {{ConstraintKind::horizontal_joint, 0, 1, 0},
-                         {ConstraintKind::horizontal_joint, 1, 2, 0},
-                         {ConstraintKind::horizontal_joint, 2, 0, 0}},
-                        describe);
+      ChangeOfVariables<2>(6,
+                           nodes,
+                           {},
+                           {},
+                           {{ConstraintKind::joint, 0, 1, up, 0},
+                            {ConstraintKind::joint, 1, 2, up, 0},
+                            {ConstraintKind::joint, 2, 0, up, 0}},
+                           describe);
     });
     expect_error("a chain on two supports", [&]() {
-      ChangeOfVariables(3,
-                        {0, 0, 1},
-                        {{ConstraintKind::signorini, 0, 0, -0.1},
-                         {ConstraintKind::horizontal_joint, 0, 1, 0},
-                         {ConstraintKind::horizontal_joint, 1, 2, 0}},
-                        describe);
+      ChangeOfVariables<2>(6,
+                           nodes,
+                           {},
+                           {{2, up}},
+                           {{ConstraintKind::signorini, 0, 0, up, -0.1},
+                            {ConstraintKind::joint, 0, 1, up, 0},
+                            {ConstraintKind::joint, 1, 2, up, 0}},
+                           describe);
     });
   }
 } // namespace

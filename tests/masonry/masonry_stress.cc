@@ -68,7 +68,7 @@ namespace
   }
 
   double
-  largest(const std::vector<NodalDisplacement> &u)
+  largest(const std::vector<NodalDisplacement<2>> &u)
   {
     double result = 0;
     for (const auto &node : u)
@@ -79,8 +79,8 @@ namespace
   }
 
   double
-  difference(const std::vector<NodalDisplacement> &u,
-             const std::vector<NodalDisplacement> &v)
+  difference(const std::vector<NodalDisplacement<2>> &u,
+             const std::vector<NodalDisplacement<2>> &v)
   {
     double result = 0;
     for (std::size_t i = 0; i < u.size(); ++i)

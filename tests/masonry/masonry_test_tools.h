@@ -41,8 +41,8 @@ namespace masonry_test
   /// A scene that has run (solved, no VTU), with its report.
   struct Run
   {
-    std::unique_ptr<MasonryScene> scene;
-    lcp::Report                   report;
+    std::unique_ptr<MasonryScene<2>> scene;
+    lcp::Report                      report;
   };
 
   inline Run
@@ -50,7 +50,7 @@ namespace masonry_test
   {
     static std::ostringstream quiet;
     Run                       result;
-    result.scene = std::make_unique<MasonryScene>(setup.parameters);
+    result.scene = std::make_unique<MasonryScene<2>>(setup.parameters);
     dealii::TimerOutput timer(quiet,
                               dealii::TimerOutput::never,
                               dealii::TimerOutput::wall_times);
@@ -69,8 +69,8 @@ namespace masonry_test
   inline Sizes
   count(const Setup &setup)
   {
-    MasonryScene scene(setup.parameters);
-    RunContext   context;
+    MasonryScene<2> scene(setup.parameters);
+    RunContext      context;
     scene.set_up(context);
     return scene.sizes();
   }

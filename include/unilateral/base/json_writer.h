@@ -33,6 +33,9 @@ namespace unilateral
     set(const std::string &key, const char *value);
     JsonObject &
     set(const std::string &key, const JsonObject &value);
+    /// An array of numbers (null where not finite).
+    JsonObject &
+    set(const std::string &key, const std::vector<double> &numbers);
     /// An array of objects (written as they are now; for a top-level key).
     JsonObject &
     set(const std::string &key, const std::vector<JsonObject> &array);

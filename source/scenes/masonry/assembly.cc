@@ -2,6 +2,7 @@
 #include <unilateral/scenes/masonry/assembly.h>
 
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,11 +15,12 @@ namespace unilateral::masonry
     // The new variables each cell touches: the union of the expansions of
     // its physical DOFs, sorted. Stored for all cells (CSR), since both the
     // sparsity pattern and the assembly walk them.
+    template <int dim>
     void
-    collect_cell_variables(const dealii::DoFHandler<2> &dof_handler,
-                           const ChangeOfVariables     &change,
-                           std::vector<std::size_t>    &start,
-                           std::vector<int>            &variables)
+    collect_cell_variables(const dealii::DoFHandler<dim> &dof_handler,
+                           const ChangeOfVariables<dim>  &change,
+                           std::vector<std::size_t>      &start,
+                           std::vector<int>              &variables)
     {
       const unsigned int dofs_per_cell = dof_handler.get_fe().n_dofs_per_cell();
       const auto n_cells = dof_handler.get_triangulation().n_active_cells();
@@ -112,16 +114,117 @@ namespace unilateral::masonry
     }
   } // namespace
 
-  lcp::Problem
-  assemble_lcp(const Discretisation    &discretisation,
-               const ChangeOfVariables &change,
-               const ContactSet        &contacts,
-               const LoadData          &loads)
+  template <int dim>
+  CellSystem<dim>::CellSystem(const Discretisation<dim> &discretisation,
+                              const LoadData<dim>       &loads)
+    : loads(loads)
+    , fe_values(*discretisation.mapping,
+                *discretisation.fe,
+                *discretisation.quadrature,
+                dealii::update_values | dealii::update_gradients |
+                  dealii::update_JxW_values)
+    , fe_face_values(*discretisation.mapping,
+                     *discretisation.fe,
+                     *discretisation.face_quadrature,
+                     dealii::update_values | dealii::update_JxW_values |
+                       dealii::update_quadrature_points)
+    , dofs_per_cell(discretisation.fe->n_dofs_per_cell())
+    , component(dofs_per_cell)
+    , matrix(dofs_per_cell * dofs_per_cell)
+    , rhs(dofs_per_cell)
   {
-    const dealii::DoFHandler<2>    &dof_handler   = discretisation.dof_handler;
-    const dealii::FiniteElement<2> &fe            = *discretisation.fe;
-    const unsigned int              dofs_per_cell = fe.n_dofs_per_cell();
-    const int                       n = static_cast<int>(change.n_unknowns());
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      component[i] = discretisation.fe->system_to_component_index(i).first;
+    for (const Support<dim> &support : loads.supports->list)
+      if (support.kind == Support<dim>::Kind::traction)
+        {
+          if (support.boundary >= traction_on.size())
+            traction_on.resize(support.boundary + 1);
+          traction_on[support.boundary].push_back(&support);
+        }
+  }
+
+  template <int dim>
+  void
+  CellSystem<dim>::reinit(
+    const typename dealii::DoFHandler<dim>::active_cell_iterator &cell)
+  {
+    fe_values.reinit(cell);
+    const MaterialClass &material =
+      loads.classes[loads.class_of_block[cell->material_id()]];
+    const double                 lambda = material.lambda();
+    const double                 mu     = material.mu();
+    const dealii::Tensor<1, dim> body_force =
+      material.density * loads.supports->gravity;
+
+    // Linear elasticity, as in step-8 (plane strain in 2D).
+    std::fill(matrix.begin(), matrix.end(), 0.0);
+    std::fill(rhs.begin(), rhs.end(), 0.0);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int            ci = component[i];
+            const dealii::Tensor<1, dim> &gi = fe_values.shape_grad(i, q);
+            for (unsigned int j = i; j < dofs_per_cell; ++j)
+              {
+                const unsigned int            cj = component[j];
+                const dealii::Tensor<1, dim> &gj = fe_values.shape_grad(j, q);
+                double value = gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
+                if (ci == cj)
+                  value += (gi * gj) * mu;
+                matrix[i * dofs_per_cell + j] += value * JxW;
+              }
+            if (body_force[ci] != 0)
+              rhs[i] += fe_values.shape_value(i, q) * body_force[ci] * JxW;
+          }
+      }
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        matrix[i * dofs_per_cell + j] = matrix[j * dofs_per_cell + i];
+
+    if (traction_on.empty() || loads.supports->zero_traction)
+      return;
+    for (const unsigned int f : cell->face_indices())
+      {
+        if (!cell->face(f)->at_boundary() ||
+            cell->face(f)->boundary_id() >= traction_on.size() ||
+            traction_on[cell->face(f)->boundary_id()].empty())
+          continue;
+        fe_face_values.reinit(cell, f);
+        for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
+          {
+            const dealii::Point<dim> &x = fe_face_values.quadrature_point(q);
+            // Where several traction entries cover a point, it is loaded
+            // once.
+            bool loaded = false;
+            for (const Support<dim> *support :
+                 traction_on[cell->face(f)->boundary_id()])
+              loaded = loaded || support->region == nullptr ||
+                       support->region->value(x) > 0.5;
+            if (!loaded)
+              continue;
+            dealii::Vector<double> t(dim);
+            loads.supports->traction->vector_value(x, t);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              rhs[i] += fe_face_values.shape_value(i, q) * t[component[i]] *
+                        fe_face_values.JxW(q);
+          }
+      }
+  }
+
+  template <int dim>
+  lcp::Problem
+  assemble_lcp(const Discretisation<dim>    &discretisation,
+               const ChangeOfVariables<dim> &change,
+               const ContactSet<dim>        &contacts,
+               const LoadData<dim>          &loads,
+               double                       &energy_offset)
+  {
+    const dealii::DoFHandler<dim> &dof_handler = discretisation.dof_handler;
+    const unsigned int dofs_per_cell = discretisation.fe->n_dofs_per_cell();
+    const int          n             = static_cast<int>(change.n_unknowns());
 
     lcp::Problem problem;
     problem.b = lcp::Vector::Zero(n);
@@ -131,97 +234,46 @@ namespace unilateral::masonry
     collect_cell_variables(dof_handler, change, cell_start, cell_variables);
     make_pattern(n, cell_start, cell_variables, problem.A);
 
-    dealii::FEValues<2>     fe_values(*discretisation.mapping,
-                                  fe,
-                                  *discretisation.quadrature,
-                                  dealii::update_values |
-                                    dealii::update_gradients |
-                                    dealii::update_JxW_values);
-    dealii::FEFaceValues<2> fe_face_values(*discretisation.mapping,
-                                           fe,
-                                           *discretisation.face_quadrature,
-                                           dealii::update_values |
-                                             dealii::update_JxW_values);
-    const unsigned int      n_q_points = discretisation.quadrature->size();
-    const bool              loaded_top =
-      loads.top_traction[0] != 0 || loads.top_traction[1] != 0;
-
-    std::vector<unsigned int> component(dofs_per_cell);
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      component[i] = fe.system_to_component_index(i).first;
-
     std::vector<dealii::types::global_dof_index> dofs(dofs_per_cell);
-    std::vector<double> cell_matrix(dofs_per_cell * dofs_per_cell);
-    std::vector<double> cell_rhs(dofs_per_cell);
+    CellSystem<dim>            cell_system(discretisation, loads);
+    const std::vector<double> &cell_matrix = cell_system.matrix;
+    const std::vector<double> &cell_rhs    = cell_system.rhs;
     std::vector<int>    position(n, -1); // variable -> index in the cell list
-    std::vector<double> reduced_matrix, reduced_rhs;
+    std::vector<double> reduced_matrix, reduced_rhs, load(dofs_per_cell);
     struct LocalTerm
     {
       unsigned int position;
       double       coefficient;
     };
-    std::vector<std::size_t> term_start(dofs_per_cell + 1);
     std::vector<LocalTerm>   local_terms;
+    std::vector<std::size_t> term_start(dofs_per_cell + 1);
 
-    double *const           values = problem.A.valuePtr();
-    const lcp::Index *const outer  = problem.A.outerIndexPtr();
-    const lcp::Index *const inner  = problem.A.innerIndexPtr();
+    const lcp::Index *outer  = problem.A.outerIndexPtr();
+    const lcp::Index *inner  = problem.A.innerIndexPtr();
+    double           *values = problem.A.valuePtr();
+    energy_offset            = 0;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        fe_values.reinit(cell);
         cell->get_dof_indices(dofs);
-        const MaterialClass &material =
-          loads.classes[loads.class_of_block[cell->material_id()]];
-        const double lambda       = material.lambda();
-        const double mu           = material.mu();
-        const double body_force_y = -material.density * loads.gravity;
+        cell_system.reinit(cell);
 
-        // Plane strain elasticity, as in step-8.
-        std::fill(cell_matrix.begin(), cell_matrix.end(), 0.0);
-        std::fill(cell_rhs.begin(), cell_rhs.end(), 0.0);
-        for (unsigned int q = 0; q < n_q_points; ++q)
-          {
-            const double JxW = fe_values.JxW(q);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const unsigned int          ci = component[i];
-                const dealii::Tensor<1, 2> &gi = fe_values.shape_grad(i, q);
-                for (unsigned int j = i; j < dofs_per_cell; ++j)
-                  {
-                    const unsigned int          cj = component[j];
-                    const dealii::Tensor<1, 2> &gj = fe_values.shape_grad(j, q);
-                    double                      value =
-                      gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
-                    if (ci == cj)
-                      value += (gi * gj) * mu;
-                    cell_matrix[i * dofs_per_cell + j] += value * JxW;
-                  }
-                if (ci == 1)
-                  cell_rhs[i] +=
-                    fe_values.shape_value(i, q) * body_force_y * JxW;
-              }
-          }
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = 0; j < i; ++j)
-            cell_matrix[i * dofs_per_cell + j] =
-              cell_matrix[j * dofs_per_cell + i];
-
-        if (loaded_top)
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                std::abs(cell->face(f)->center()[1] - loads.y_top) <=
-                  loads.tolerance &&
-                cell->face(f)->center()[1] > cell->center()[1])
-              {
-                fe_face_values.reinit(cell, f);
-                for (unsigned int q = 0; q < fe_face_values.n_quadrature_points;
-                     ++q)
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    cell_rhs[i] += fe_face_values.shape_value(i, q) *
-                                   loads.top_traction[component[i]] *
-                                   fe_face_values.JxW(q);
-              }
+        // The load less what the prescribed displacements c take:
+        // f - K c, and the energy's constant part 1/2 c'Kc - f'c.
+        std::copy(cell_rhs.begin(), cell_rhs.end(), load.begin());
+        if (change.has_offsets())
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            {
+              const double c_i = change.offset(dofs[i]);
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                {
+                  const double K_ij_c_j =
+                    cell_matrix[i * dofs_per_cell + j] * change.offset(dofs[j]);
+                  load[i] -= K_ij_c_j;
+                  energy_offset += 0.5 * c_i * K_ij_c_j;
+                }
+              energy_offset -= cell_rhs[i] * c_i;
+            }
 
         // Expand into the new variables: u_i = sum_t c_t u~_{v_t}, so the
         // local contribution to A~ is sum_ij K_ij c_a c_b at (v_a, v_b).
@@ -248,7 +300,7 @@ namespace unilateral::masonry
           for (std::size_t s = term_start[i]; s < term_start[i + 1]; ++s)
             {
               const LocalTerm a = local_terms[s];
-              reduced_rhs[a.position] += a.coefficient * cell_rhs[i];
+              reduced_rhs[a.position] += a.coefficient * load[i];
               double *row = reduced_matrix.data() +
                             static_cast<std::size_t>(a.position) * n_local;
               for (unsigned int j = 0; j < dofs_per_cell; ++j)
@@ -282,7 +334,7 @@ namespace unilateral::masonry
           position[cell_variables[k]] = -1;
       }
 
-    // S and its bounds: 0 for the gaps of joints, -g for Signorini.
+    // S and its bounds: 0 for the gaps of joints, -gap for Signorini.
     problem.constrained.resize(contacts.constraints.size());
     problem.lower_bound.resize(contacts.constraints.size());
     for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
@@ -292,4 +344,52 @@ namespace unilateral::masonry
       }
     return problem;
   }
+
+  template <int dim>
+  std::vector<double>
+  residual_forces(const Discretisation<dim> &discretisation,
+                  const LoadData<dim>       &loads,
+                  const std::vector<double> &u)
+  {
+    const unsigned int  dofs_per_cell = discretisation.fe->n_dofs_per_cell();
+    std::vector<double> residual(u.size(), 0.0);
+    std::vector<dealii::types::global_dof_index> dofs(dofs_per_cell);
+    CellSystem<dim> cell_system(discretisation, loads);
+    for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        cell_system.reinit(cell);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            double r = -cell_system.rhs[i];
+            for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              r += cell_system.matrix[i * dofs_per_cell + j] * u[dofs[j]];
+            residual[dofs[i]] += r;
+          }
+      }
+    return residual;
+  }
+
+  template class CellSystem<2>;
+  template class CellSystem<3>;
+  template lcp::Problem
+  assemble_lcp<2>(const Discretisation<2> &,
+                  const ChangeOfVariables<2> &,
+                  const ContactSet<2> &,
+                  const LoadData<2> &,
+                  double &);
+  template lcp::Problem
+  assemble_lcp<3>(const Discretisation<3> &,
+                  const ChangeOfVariables<3> &,
+                  const ContactSet<3> &,
+                  const LoadData<3> &,
+                  double &);
+  template std::vector<double>
+  residual_forces<2>(const Discretisation<2> &,
+                     const LoadData<2> &,
+                     const std::vector<double> &);
+  template std::vector<double>
+  residual_forces<3>(const Discretisation<3> &,
+                     const LoadData<3> &,
+                     const std::vector<double> &);
 } // namespace unilateral::masonry

@@ -1,14 +1,20 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/scenes/masonry/contact_detection.h>
 
+#include <deal.II/base/quadrature.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
+#include <set>
 #include <sstream>
 #include <type_traits>
 
@@ -17,336 +23,810 @@ namespace unilateral::masonry
   static_assert(std::is_same_v<DofIndex, dealii::types::global_dof_index>,
                 "DofIndex must match deal.II's global_dof_index");
 
+  template <int dim>
   std::string
-  describe_point(const double x, const double y, const unsigned int block)
+  describe_point(const std::array<double, dim> &point, const unsigned int block)
   {
     std::ostringstream text;
-    text << "(" << x << ", " << y << ") in block " << block;
+    text << "(" << point[0];
+    for (unsigned int d = 1; d < dim; ++d)
+      text << ", " << point[d];
+    text << ") in block " << block;
     return text.str();
+  }
+
+  template <int dim>
+  std::string
+  ContactSet<dim>::describe_node(const unsigned int node) const
+  {
+    return "the node at " +
+           describe_point<dim>(node_position[node], node_block[node]);
   }
 
   namespace
   {
-    // A boundary face of one block: a segment on the line {x_axis = line}
-    // with outward normal sign * e_axis, and its three nodes (the ends and
-    // the midpoint, as FE_Q(2) and FE_SimplexP(2) order a face).
+    /// Faces of cells whose normals differ by less than this angle are
+    /// one curved surface at a node: their normals are averaged.
+    const double same_surface = std::cos(25.0 * M_PI / 180.0);
+
+    template <int dim>
+    std::array<double, dim>
+    as_array(const dealii::Tensor<1, dim> &t)
+    {
+      std::array<double, dim> a;
+      for (unsigned int d = 0; d < dim; ++d)
+        a[d] = t[d];
+      return a;
+    }
+
+    template <int dim>
+    dealii::Tensor<1, dim>
+    as_tensor(const std::array<double, dim> &a)
+    {
+      dealii::Tensor<1, dim> t;
+      for (unsigned int d = 0; d < dim; ++d)
+        t[d] = a[d];
+      return t;
+    }
+
+    /// A boundary face of one block.
+    template <int dim>
     struct FaceRecord
     {
-      unsigned int block;
-      unsigned int axis;   ///< 0: vertical face (normal +-x), 1: horizontal
-      int          sign;   ///< outward normal is sign * e_axis
-      double       line;   ///< the coordinate along the normal
-      double       t0, t1; ///< the extent along the tangent, t0 < t1
-      std::array<std::array<DofIndex, 2>, 3> node_dofs; ///< [node][component]
-      std::array<double, 3>                  node_t;    ///< tangent coordinate
-      bool contact = false; ///< overlaps a face of another block
+      typename dealii::DoFHandler<dim>::active_cell_iterator cell;
+      unsigned int                                           face_no;
+      unsigned int                                           block;
+      dealii::types::boundary_id                             boundary;
+      std::vector<dealii::Point<dim>>                        vertices;
+      dealii::Tensor<1, dim>    normal; ///< outward
+      std::vector<unsigned int> nodes;
+      double                    diameter;
     };
 
-    // Simpson weights of a quadratic face: its ends and its midpoint.
-    constexpr std::array<double, 3> simpson{{1.0 / 6, 1.0 / 6, 4.0 / 6}};
-
-    std::array<double, 2>
-    point_on(const FaceRecord &face, const double t)
+    /// A unit normal from the face's vertices, pointing away from the
+    /// cell's centre; InputError for a degenerate or (3D) warped face.
+    template <int dim>
+    dealii::Tensor<1, dim>
+    face_normal(const std::vector<dealii::Point<dim>> &v,
+                const dealii::Point<dim>              &cell_centre,
+                const unsigned int                     block,
+                const double                           tolerance)
     {
-      return face.axis == 0 ? std::array<double, 2>{{face.line, t}} :
-                              std::array<double, 2>{{t, face.line}};
-    }
-
-    std::vector<FaceRecord>
-    collect_boundary_faces(const dealii::DoFHandler<2, 2> &dof_handler,
-                           const double                    tolerance)
-    {
-      const dealii::FiniteElement<2, 2> &fe = dof_handler.get_fe();
-      AssertThrow(fe.n_components() == 2 && fe.n_dofs_per_face() == 6,
-                  dealii::ExcMessage("contact detection expects a vector "
-                                     "quadratic Lagrange element"));
-      // Face DOF i is component c of face node k (0, 1: ends; 2: midpoint).
-      std::array<std::pair<unsigned int, unsigned int>, 6> face_node;
-      for (unsigned int i = 0; i < 6; ++i)
-        face_node[i] = fe.face_system_to_component_index(i);
-
-      std::vector<FaceRecord>                      faces;
-      std::vector<dealii::types::global_dof_index> face_dofs(6);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          {
-            if (!cell->face(f)->at_boundary())
-              continue;
-            const auto             face = cell->face(f);
-            const dealii::Point<2> a    = face->vertex(0);
-            const dealii::Point<2> b    = face->vertex(1);
-            FaceRecord             record;
-            record.block = cell->material_id();
-            if (std::abs(a[0] - b[0]) <= tolerance)
-              record.axis = 0;
-            else if (std::abs(a[1] - b[1]) <= tolerance)
-              record.axis = 1;
-            else
-              {
-                std::ostringstream message;
-                message << "block " << record.block
-                        << " has a boundary face from (" << a[0] << ", " << a[1]
-                        << ") to (" << b[0] << ", " << b[1]
-                        << ") that is not parallel to an axis; masonry "
-                           "blocks must be axis-aligned rectangles";
-                throw InputError(message.str());
-              }
-            const unsigned int axis    = record.axis;
-            const unsigned int tangent = 1 - axis;
-            record.line                = 0.5 * (a[axis] + b[axis]);
-            record.sign   = record.line > cell->center()[axis] ? 1 : -1;
-            record.t0     = std::min(a[tangent], b[tangent]);
-            record.t1     = std::max(a[tangent], b[tangent]);
-            record.node_t = {
-              {a[tangent], b[tangent], 0.5 * (a[tangent] + b[tangent])}};
-            face->get_dof_indices(face_dofs);
-            for (unsigned int i = 0; i < 6; ++i)
-              record.node_dofs[face_node[i].second][face_node[i].first] =
-                face_dofs[i];
-            faces.push_back(record);
-          }
-      return faces;
-    }
-
-    struct BlockExtent
-    {
-      double x0 = std::numeric_limits<double>::max();
-      double x1 = -std::numeric_limits<double>::max();
-    };
-
-    void
-    throw_non_matching(const FaceRecord &with_node,
-                       const double      t,
-                       const FaceRecord &without,
-                       const double      tolerance)
-    {
-      const auto         p = point_on(with_node, t);
-      std::ostringstream message;
-      message << "non-matching nodes on the edge shared by blocks "
-              << with_node.block << " and " << without.block << ": the node "
-              << "at (" << p[0] << ", " << p[1] << ") of block "
-              << with_node.block << " has no coincident node of block "
-              << without.block << " (tolerance " << tolerance
-              << "); node-to-node contact needs matching nodes, so make the "
-                 "block sides multiples of the cell size";
-      throw InputError(message.str());
-    }
-  } // namespace
-
-  ContactSet
-  detect_contacts(const dealii::DoFHandler<2, 2> &dof_handler,
-                  const double                    signorini_fraction,
-                  const double                    gap,
-                  const double                    tolerance)
-  {
-    const DofIndex n_dofs = dof_handler.n_dofs();
-    ContactSet     result;
-    result.dirichlet.assign(n_dofs, 0);
-    result.contact_weight.assign(n_dofs, 0.0);
-
-    std::vector<FaceRecord> faces =
-      collect_boundary_faces(dof_handler, tolerance);
-
-    // The bounding box and the x-extent of every block, from the mesh.
-    double                   x_min = std::numeric_limits<double>::max();
-    double                   x_max = -x_min, y_min = x_min;
-    std::vector<BlockExtent> extent;
-    for (const FaceRecord &face : faces)
-      {
-        if (face.block >= extent.size())
-          extent.resize(face.block + 1);
-        const double x_lo     = face.axis == 0 ? face.line : face.t0;
-        const double x_hi     = face.axis == 0 ? face.line : face.t1;
-        extent[face.block].x0 = std::min(extent[face.block].x0, x_lo);
-        extent[face.block].x1 = std::max(extent[face.block].x1, x_hi);
-        x_min                 = std::min(x_min, x_lo);
-        x_max                 = std::max(x_max, x_hi);
-        y_min = std::min(y_min, face.axis == 1 ? face.line : face.t0);
-      }
-    const double x_split = x_min + signorini_fraction * (x_max - x_min);
-
-    // Supports: the sides (u_x = 0) and the base (Signorini or u_y = 0).
-    std::vector<char> signorini(n_dofs, 0);
-    for (FaceRecord &face : faces)
-      {
-        const bool side =
-          face.axis == 0 &&
-          ((face.sign < 0 && std::abs(face.line - x_min) <= tolerance) ||
-           (face.sign > 0 && std::abs(face.line - x_max) <= tolerance));
-        const bool base = face.axis == 1 && face.sign < 0 &&
-                          std::abs(face.line - y_min) <= tolerance;
-        if (side)
-          for (const auto &dofs : face.node_dofs)
-            result.dirichlet[dofs[0]] = 1;
-        if (base)
-          for (unsigned int k = 0; k < 3; ++k)
-            {
-              const double x        = face.node_t[k];
-              const bool   on_split = std::abs(x - x_split) <= tolerance;
-              const bool   block_ends_there =
-                extent[face.block].x1 <= x_split + tolerance;
-              const DofIndex dof = face.node_dofs[k][1];
-              if ((x < x_split && !on_split) || (on_split && block_ends_there))
-                {
-                  signorini[dof] = 1;
-                  result.contact_weight[dof] +=
-                    simpson[k] * (face.t1 - face.t0);
-                }
-              else
-                result.dirichlet[dof] = 1;
-            }
-      }
-
-    // Signorini rows, in DOF order. Their position is looked up from the
-    // base faces (each Signorini DOF is on one).
-    {
-      std::vector<std::pair<DofIndex, std::size_t>> base_nodes;
-      for (std::size_t f = 0; f < faces.size(); ++f)
-        if (faces[f].axis == 1 && faces[f].sign < 0)
-          for (unsigned int k = 0; k < 3; ++k)
-            if (signorini[faces[f].node_dofs[k][1]])
-              base_nodes.emplace_back(faces[f].node_dofs[k][1], f * 3 + k);
-      std::sort(base_nodes.begin(), base_nodes.end());
-      for (std::size_t i = 0; i < base_nodes.size(); ++i)
+      dealii::Tensor<1, dim> n;
+      if constexpr (dim == 2)
         {
-          if (i > 0 && base_nodes[i].first == base_nodes[i - 1].first)
-            continue;
-          const FaceRecord  &face = faces[base_nodes[i].second / 3];
-          const unsigned int k    = base_nodes[i].second % 3;
-          result.constraints.push_back(
-            {ConstraintKind::signorini, base_nodes[i].first, 0, -gap});
-          result.position.push_back(point_on(face, face.node_t[k]));
-          result.blocks.push_back({{face.block, face.block}});
+          const dealii::Tensor<1, 2> t = v[1] - v[0];
+          n[0]                         = t[1];
+          n[1]                         = -t[0];
         }
-      result.n_signorini = static_cast<unsigned int>(result.constraints.size());
+      else if (v.size() == 3)
+        n = dealii::cross_product_3d(v[1] - v[0], v[2] - v[0]);
+      else // deal.II's quadrilateral vertex order: diagonals 0-3 and 1-2
+        n = dealii::cross_product_3d(v[3] - v[0], v[2] - v[1]);
+      const double size = v[0].distance(v.back());
+      if (n.norm() <= tolerance * size)
+        {
+          std::ostringstream message;
+          message << "block " << block << " has a degenerate face at (" << v[0]
+                  << "): its vertices do not span a "
+                  << (dim == 2 ? "segment" : "surface")
+                  << "; remove the collapsed cell from the mesh";
+          throw InputError(message.str());
+        }
+      n /= n.norm();
+      dealii::Point<dim> centre;
+      for (const auto &p : v)
+        centre += p / static_cast<double>(v.size());
+      for (const auto &p : v)
+        if (std::abs((p - centre) * n) > 1e-6 * size + tolerance)
+          {
+            std::ostringstream message;
+            message << "block " << block << " has a warped face at (" << p
+                    << "): its vertices are " << std::abs((p - centre) * n)
+                    << " out of one plane; node-to-node contact needs flat "
+                       "faces";
+            throw InputError(message.str());
+          }
+      if ((centre - cell_centre) * n < 0)
+        n = -n;
+      return n;
     }
 
-    // Joints: group the faces by line (sorting, so no quadratic search),
-    // then sweep the faces with outward normal +e (the lower or left block)
-    // against those with -e (the upper or right block).
-    std::vector<std::size_t> order(faces.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      if (faces[a].axis != faces[b].axis)
-        return faces[a].axis < faces[b].axis;
-      if (faces[a].line != faces[b].line)
-        return faces[a].line < faces[b].line;
-      return faces[a].t0 < faces[b].t0;
-    });
-
-    struct JointPair
+    /// Coordinates in the plane of the direction class d.
+    template <int dim>
+    struct PlaneBasis
     {
-      DofIndex              lower, upper;
-      ConstraintKind        kind;
-      std::array<double, 2> position;
-      unsigned int          lower_block, upper_block;
-    };
-    std::vector<JointPair>   pairs;
-    std::vector<std::size_t> plus, minus;
+      explicit PlaneBasis(const std::array<double, dim> &d)
+      {
+        unsigned int smallest = 0;
+        for (unsigned int c = 1; c < dim; ++c)
+          if (std::abs(d[c]) < std::abs(d[smallest]))
+            smallest = c;
+        const dealii::Tensor<1, dim> n = as_tensor<dim>(d);
+        dealii::Tensor<1, dim>       axis;
+        axis[smallest] = 1;
+        t1             = axis - (axis * n) * n;
+        t1 /= t1.norm();
+        if constexpr (dim == 3)
+          t2 = dealii::cross_product_3d(n, t1);
+      }
 
-    auto match_nodes =
-      [&](FaceRecord &p, FaceRecord &q, const double lo, const double hi) {
-        // Every node of either face inside the common segment needs a
-        // coincident partner on the other face.
-        for (unsigned int k = 0; k < 3; ++k)
-          if (q.node_t[k] >= lo - tolerance && q.node_t[k] <= hi + tolerance)
+      std::array<double, 2>
+      operator()(const dealii::Point<dim> &p) const
+      {
+        return {{p * t1, dim == 3 ? p * t2 : 0.0}};
+      }
+
+      dealii::Tensor<1, dim> t1, t2;
+    };
+
+    using Polygon = std::vector<std::array<double, 2>>;
+
+    double
+    cross(const std::array<double, 2> &o,
+          const std::array<double, 2> &a,
+          const std::array<double, 2> &b)
+    {
+      return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+    }
+
+    /// Counter-clockwise order of a convex polygon's vertices (deal.II's
+    /// quadrilaterals are numbered lexicographically, not around).
+    Polygon
+    convex_hull_order(Polygon p)
+    {
+      if (p.size() == 4)
+        std::swap(p[2], p[3]);
+      double area = 0;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        area += cross({{0, 0}}, p[i], p[(i + 1) % p.size()]);
+      if (area < 0)
+        std::reverse(p.begin(), p.end());
+      return p;
+    }
+
+    /// The area of the intersection of two convex counter-clockwise
+    /// polygons (Sutherland-Hodgman).
+    double
+    overlap_area(const Polygon &subject, const Polygon &clip)
+    {
+      Polygon output = subject;
+      for (std::size_t i = 0; i < clip.size() && !output.empty(); ++i)
+        {
+          const auto &a     = clip[i];
+          const auto &b     = clip[(i + 1) % clip.size()];
+          Polygon     input = output;
+          output.clear();
+          for (std::size_t j = 0; j < input.size(); ++j)
             {
-              bool found = false;
-              for (unsigned int l = 0; l < 3; ++l)
-                found |= std::abs(p.node_t[l] - q.node_t[k]) <= tolerance;
-              if (!found)
-                throw_non_matching(q, q.node_t[k], p, tolerance);
+              const auto  &p  = input[j];
+              const auto  &q  = input[(j + 1) % input.size()];
+              const double cp = cross(a, b, p), cq = cross(a, b, q);
+              if (cp >= 0)
+                output.push_back(p);
+              if ((cp >= 0) != (cq >= 0))
+                {
+                  const double t = cp / (cp - cq);
+                  output.push_back(
+                    {{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])}});
+                }
             }
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            if (p.node_t[k] < lo - tolerance || p.node_t[k] > hi + tolerance)
-              continue;
-            int partner = -1;
-            for (unsigned int l = 0; l < 3; ++l)
-              if (std::abs(p.node_t[k] - q.node_t[l]) <= tolerance)
-                partner = static_cast<int>(l);
-            if (partner < 0)
-              throw_non_matching(p, p.node_t[k], q, tolerance);
-            pairs.push_back({p.node_dofs[k][p.axis],
-                             q.node_dofs[partner][p.axis],
-                             p.axis == 1 ? ConstraintKind::horizontal_joint :
-                                           ConstraintKind::vertical_joint,
-                             point_on(p, p.node_t[k]),
-                             p.block,
-                             q.block});
-          }
-        p.contact = true;
-        q.contact = true;
+        }
+      double area = 0;
+      for (std::size_t i = 0; i < output.size(); ++i)
+        area += cross({{0, 0}}, output[i], output[(i + 1) % output.size()]);
+      return 0.5 * area;
+    }
+
+    /// Whether @p p lies in the closed convex polygon (or segment, 2D),
+    /// to @p tolerance.
+    bool
+    inside(const Polygon               &polygon,
+           const std::array<double, 2> &p,
+           const double                 tolerance,
+           const bool                   segment)
+    {
+      if (segment)
+        return p[0] >= std::min(polygon[0][0], polygon[1][0]) - tolerance &&
+               p[0] <= std::max(polygon[0][0], polygon[1][0]) + tolerance;
+      for (std::size_t i = 0; i < polygon.size(); ++i)
+        {
+          const auto  &a      = polygon[i];
+          const auto  &b      = polygon[(i + 1) % polygon.size()];
+          const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+          if (cross(a, b, p) < -tolerance * length)
+            return false;
+        }
+      return true;
+    }
+
+    /// Unit vectors grouped where they differ by less than same_surface,
+    /// each group averaged.
+    template <int dim>
+    struct NormalGroups
+    {
+      struct Group
+      {
+        dealii::Tensor<1, dim>   sum;
+        std::vector<std::size_t> items;
+
+        std::array<double, dim>
+        mean() const
+        {
+          return as_array<dim>(sum / sum.norm());
+        }
       };
 
-    for (std::size_t begin = 0; begin < order.size();)
+      void
+      add(const dealii::Tensor<1, dim> &n, const std::size_t item)
       {
-        std::size_t end = begin;
-        while (end < order.size() &&
-               faces[order[end]].axis == faces[order[begin]].axis &&
-               faces[order[end]].line - faces[order[begin]].line <= tolerance)
-          ++end;
-        plus.clear();
-        minus.clear();
-        for (std::size_t i = begin; i < end; ++i)
-          (faces[order[i]].sign > 0 ? plus : minus).push_back(order[i]);
-        // Lines equal within the tolerance may interleave in the sort.
-        auto by_start = [&](std::size_t a, std::size_t b) {
-          return faces[a].t0 < faces[b].t0;
-        };
-        std::sort(plus.begin(), plus.end(), by_start);
-        std::sort(minus.begin(), minus.end(), by_start);
-        // Both lists are sorted by t0 and, in a valid layout, disjoint, so
-        // one merge-like sweep finds every overlapping pair.
-        std::size_t i = 0, j = 0;
-        while (i < plus.size() && j < minus.size())
+        for (Group &group : groups)
+          if (n * (group.sum / group.sum.norm()) > same_surface)
+            {
+              group.sum += n;
+              group.items.push_back(item);
+              return;
+            }
+        groups.push_back({n, {item}});
+      }
+
+      std::vector<Group> groups;
+    };
+
+    /// Per node, what its supports' faces say.
+    template <int dim>
+    struct NodeConditions
+    {
+      int                       held_support = -1;
+      std::array<double, dim>   held_value{};
+      NormalGroups<dim>         rollers, signorini;
+      std::vector<unsigned int> roller_support, signorini_support;
+      std::vector<std::size_t>  signorini_face;
+    };
+  } // namespace
+
+  template <int dim>
+  ContactSet<dim>
+  detect_contacts(const dealii::DoFHandler<dim, dim> &dof_handler,
+                  const dealii::Mapping<dim, dim>    &mapping,
+                  const Supports<dim>                &supports,
+                  const double                        tolerance,
+                  const double                        cell_size)
+  {
+    using Kind                               = typename Support<dim>::Kind;
+    const dealii::FiniteElement<dim> &fe     = dof_handler.get_fe();
+    const DofIndex                    n_dofs = dof_handler.n_dofs();
+    ContactSet<dim>                   result;
+
+    // The nodes, numbered in the order of their first component's DOF.
+    std::vector<dealii::Point<dim>> support_point(n_dofs);
+    dealii::DoFTools::map_dofs_to_support_points(mapping,
+                                                 dof_handler,
+                                                 support_point);
+    const unsigned int n_nodes_per_cell = fe.base_element(0).n_dofs_per_cell();
+    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    {
+      std::vector<std::array<DofIndex, dim>> dofs_of_first(
+        n_dofs, std::array<DofIndex, dim>{});
+      std::vector<unsigned int> block_of_first(n_dofs, 0);
+      std::vector<char>         first(n_dofs, 0);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int k = 0; k < n_nodes_per_cell; ++k)
+            {
+              const DofIndex x  = dofs[fe.component_to_system_index(0, k)];
+              first[x]          = 1;
+              block_of_first[x] = cell->material_id();
+              for (unsigned int c = 0; c < dim; ++c)
+                dofs_of_first[x][c] = dofs[fe.component_to_system_index(c, k)];
+            }
+        }
+      result.node_of_dof.assign(n_dofs, 0);
+      for (DofIndex i = 0; i < n_dofs; ++i)
+        if (first[i])
           {
-            FaceRecord  &p  = faces[plus[i]];
-            FaceRecord  &q  = faces[minus[j]];
-            const double lo = std::max(p.t0, q.t0);
-            const double hi = std::min(p.t1, q.t1);
-            if (hi - lo > tolerance)
-              match_nodes(p, q, lo, hi);
-            if (p.t1 < q.t1)
-              ++i;
-            else
-              ++j;
+            const auto node =
+              static_cast<unsigned int>(result.node_dofs.size());
+            result.node_dofs.push_back(dofs_of_first[i]);
+            result.node_position.push_back(
+              as_array<dim>(dealii::Tensor<1, dim>(support_point[i])));
+            result.node_block.push_back(block_of_first[i]);
+            for (const DofIndex dof : dofs_of_first[i])
+              result.node_of_dof[dof] = node;
           }
-        begin = end;
-      }
+    }
+    const std::size_t n_nodes = result.node_dofs.size();
 
-    // A node pair found from two face pairs (at a common face end) counts
-    // once.
-    std::sort(pairs.begin(),
-              pairs.end(),
-              [](const JointPair &a, const JointPair &b) {
-                return a.lower != b.lower ? a.lower < b.lower :
-                                            a.upper < b.upper;
-              });
-    for (std::size_t i = 0; i < pairs.size(); ++i)
+    // The boundary faces, with their nodes.
+    std::vector<FaceRecord<dim>>                 faces;
+    std::vector<dealii::types::global_dof_index> face_dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary())
+            continue;
+          const auto      face = cell->face(f);
+          FaceRecord<dim> record;
+          record.cell     = cell;
+          record.face_no  = f;
+          record.block    = cell->material_id();
+          record.boundary = face->boundary_id();
+          for (const unsigned int v : face->vertex_indices())
+            record.vertices.push_back(face->vertex(v));
+          record.normal   = face_normal<dim>(record.vertices,
+                                           cell->center(),
+                                           record.block,
+                                           tolerance);
+          record.diameter = face->diameter();
+          face_dofs.resize(fe.n_dofs_per_face(f));
+          face->get_dof_indices(face_dofs);
+          for (unsigned int i = 0; i < face_dofs.size(); ++i)
+            if (fe.face_system_to_component_index(i, f).first == 0)
+              record.nodes.push_back(result.node_of_dof[face_dofs[i]]);
+          faces.push_back(std::move(record));
+        }
+
+    // int phi over a face of each of its nodes (for the contact pressure).
+    const dealii::Quadrature<dim - 1> face_quadrature =
+      fe.reference_cell()
+        .face_reference_cell(0)
+        .template get_gauss_type_quadrature<dim - 1>(3);
+    dealii::FEFaceValues<dim> fe_face_values(mapping,
+                                             fe,
+                                             face_quadrature,
+                                             dealii::update_values |
+                                               dealii::update_JxW_values);
+    auto                      node_weights = [&](const FaceRecord<dim> &face) {
+      std::map<unsigned int, double> weight;
+      fe_face_values.reinit(face.cell, face.face_no);
+      face.cell->get_dof_indices(dofs);
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        if (fe.system_to_component_index(i).first == 0)
+          for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
+            weight[result.node_of_dof[dofs[i]]] +=
+              fe_face_values.shape_value_component(i, q, 0) *
+              fe_face_values.JxW(q);
+      return weight;
+    };
+
+    // Supports, node by node.
+    std::vector<NodeConditions<dim>>             conditions(n_nodes);
+    std::map<const Support<dim> *, unsigned int> support_index;
+    for (const Support<dim> &support : supports.list)
+      if (support.kind != Kind::traction)
+        {
+          support_index[&support] =
+            static_cast<unsigned int>(result.support_names.size());
+          result.support_names.push_back(support.name);
+        }
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      for (const Support<dim> *support :
+           supports.on_boundary(faces[f].boundary))
+        {
+          if (support->kind == Kind::traction)
+            continue;
+          const unsigned int index = support_index.at(support);
+          for (const unsigned int node : faces[f].nodes)
+            {
+              const dealii::Point<dim> p(
+                as_tensor<dim>(result.node_position[node]));
+              if (!supports.acts_at(*support, p, faces[f].vertices))
+                continue;
+              NodeConditions<dim> &c = conditions[node];
+              if (support->kind == Kind::held)
+                {
+                  std::array<double, dim> value{};
+                  if (support->prescribed)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      value[d] = supports.displacement->value(p, d);
+                  if (c.held_support >= 0)
+                    {
+                      double difference = 0;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        difference =
+                          std::max(difference,
+                                   std::abs(value[d] - c.held_value[d]));
+                      if (difference > tolerance)
+                        throw InputError(
+                          result.describe_node(node) + " lies on '" +
+                          result.support_names[c.held_support] + "' and '" +
+                          support->name +
+                          "', which prescribe different displacements "
+                          "there; let the two boundaries meet in different "
+                          "blocks or prescribe the same displacement");
+                      continue;
+                    }
+                  c.held_support = static_cast<int>(index);
+                  c.held_value   = value;
+                }
+              else if (support->kind == Kind::normal_zero)
+                {
+                  c.rollers.add(faces[f].normal, c.roller_support.size());
+                  c.roller_support.push_back(index);
+                }
+              else
+                {
+                  c.signorini.add(faces[f].normal, c.signorini_face.size());
+                  c.signorini_support.push_back(index);
+                  c.signorini_face.push_back(f);
+                }
+            }
+        }
+
+    // Resolve: held nodes take nothing else; a roller removes Signorini
+    // in its direction.
+    struct SignoriniRow
+    {
+      unsigned int            node;
+      std::array<double, dim> normal; ///< into the block
+      unsigned int            support;
+      double                  bound;
+      std::set<std::size_t>   faces;
+    };
+    std::vector<SignoriniRow> signorini_rows;
+    for (std::size_t node = 0; node < n_nodes; ++node)
       {
-        if (i > 0 && pairs[i].lower == pairs[i - 1].lower &&
-            pairs[i].upper == pairs[i - 1].upper)
-          continue;
+        const NodeConditions<dim> &c = conditions[node];
+        if (c.held_support >= 0)
+          {
+            result.held.push_back(
+              {static_cast<unsigned int>(node), c.held_value});
+            result.held_support.push_back(c.held_support);
+            result.n_held_dofs += dim;
+            continue;
+          }
+        for (const auto &group : c.rollers.groups)
+          {
+            result.rollers.push_back(
+              {static_cast<unsigned int>(node), group.mean()});
+            result.roller_support.push_back(
+              c.roller_support[group.items.front()]);
+          }
+        for (const auto &group : c.signorini.groups)
+          {
+            const dealii::Tensor<1, dim> n      = as_tensor<dim>(group.mean());
+            bool                         rolled = false;
+            for (const auto &roller : c.rollers.groups)
+              rolled = rolled ||
+                       std::abs(n * as_tensor<dim>(roller.mean())) > 1 - 1e-9;
+            if (rolled)
+              continue;
+            const dealii::Point<dim> p(
+              as_tensor<dim>(result.node_position[node]));
+            const double gap = supports.gap->value(p);
+            if (!std::isfinite(gap))
+              throw InputError("parameter 'Masonry/Boundary conditions/"
+                               "Signorini gap' is not finite at " +
+                               result.describe_node(node));
+            std::set<std::size_t> support_faces;
+            for (const std::size_t item : group.items)
+              support_faces.insert(c.signorini_face[item]);
+            signorini_rows.push_back({static_cast<unsigned int>(node),
+                                      as_array<dim>(-n),
+                                      c.signorini_support[group.items.front()],
+                                      -gap,
+                                      support_faces});
+          }
+      }
+    result.n_rollers = static_cast<unsigned int>(result.rollers.size());
+
+    // The main component of a direction (for the DOF order of rows).
+    auto main_component = [](const std::array<double, dim> &n) {
+      unsigned int best = 0;
+      for (unsigned int c = 1; c < dim; ++c)
+        if (std::abs(n[c]) > std::abs(n[best]) + 1e-12)
+          best = c;
+      return best;
+    };
+    std::stable_sort(
+      signorini_rows.begin(),
+      signorini_rows.end(),
+      [&](const SignoriniRow &a, const SignoriniRow &b) {
+        return result.node_dofs[a.node][main_component(a.normal)] <
+               result.node_dofs[b.node][main_component(b.normal)];
+      });
+    // The faces behind each end of each constraint (for the weights).
+    std::vector<std::array<std::set<std::size_t>, 2>> constraint_faces;
+    for (const SignoriniRow &row : signorini_rows)
+      {
         result.constraints.push_back(
-          {pairs[i].kind, pairs[i].lower, pairs[i].upper, 0.0});
-        result.position.push_back(pairs[i].position);
-        result.blocks.push_back({{pairs[i].lower_block, pairs[i].upper_block}});
-        if (pairs[i].kind == ConstraintKind::horizontal_joint)
-          ++result.n_horizontal_joint;
-        else
-          ++result.n_vertical_joint;
+          {ConstraintKind::signorini, row.node, 0, row.normal, row.bound});
+        result.position.push_back(result.node_position[row.node]);
+        result.blocks.push_back(
+          {{result.node_block[row.node], result.node_block[row.node]}});
+        result.signorini_support.push_back(row.support);
+        constraint_faces.push_back({{row.faces, {}}});
+      }
+    result.n_signorini = static_cast<unsigned int>(signorini_rows.size());
+
+    // Joints. Faces by direction class; within a class, faces with
+    // outward +d (the lower block) against faces with -d.
+    DirectionClasses<dim> classes;
+    struct ClassFace
+    {
+      std::size_t face;
+      double      offset; ///< d . x on the face
+      double      lo, hi; ///< extent along the first in-plane axis
+      bool        plus;
+    };
+    std::vector<std::vector<ClassFace>> by_class;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      {
+        const auto [k, sign] = classes.classify(as_array<dim>(faces[f].normal));
+        if (k >= by_class.size())
+          by_class.resize(k + 1);
+        by_class[k].push_back({f, 0, 0, 0, sign > 0});
+      }
+    const double near = 1e-2 * cell_size;
+    struct JointPairRecord
+    {
+      dealii::Tensor<1, dim> normal; ///< out of the first node's block
+      std::size_t            face_first, face_second;
+    };
+    std::map<std::pair<unsigned int, unsigned int>,
+             std::vector<JointPairRecord>>
+      joint_pairs;
+    for (std::size_t k = 0; k < by_class.size(); ++k)
+      {
+        const std::array<double, dim> &d = classes.directions[k];
+        const PlaneBasis<dim>          basis(d);
+        const dealii::Tensor<1, dim>   n = as_tensor<dim>(d);
+        std::vector<Polygon>           polygon(by_class[k].size());
+        double                         longest = 0;
+        for (std::size_t i = 0; i < by_class[k].size(); ++i)
+          {
+            ClassFace             &cf   = by_class[k][i];
+            const FaceRecord<dim> &face = faces[cf.face];
+            dealii::Point<dim>     centre;
+            for (const auto &v : face.vertices)
+              centre += v / static_cast<double>(face.vertices.size());
+            cf.offset = centre * n;
+            cf.lo     = std::numeric_limits<double>::max();
+            cf.hi     = -cf.lo;
+            for (const auto &v : face.vertices)
+              {
+                polygon[i].push_back(basis(v));
+                cf.lo = std::min(cf.lo, polygon[i].back()[0]);
+                cf.hi = std::max(cf.hi, polygon[i].back()[0]);
+              }
+            if (dim == 3)
+              polygon[i] = convex_hull_order(polygon[i]);
+            longest = std::max(longest, cf.hi - cf.lo);
+          }
+        // The -d faces by plane (buckets of width 4 near in the offset),
+        // each bucket sorted by the faces' start along t1: each +d face
+        // looks at those that can overlap it.
+        const auto bucket_of = [&](const double offset) {
+          return std::llround(std::floor(offset / (4 * near)));
+        };
+        std::map<long long, std::vector<std::size_t>> minus;
+        for (std::size_t i = 0; i < by_class[k].size(); ++i)
+          if (!by_class[k][i].plus)
+            minus[bucket_of(by_class[k][i].offset)].push_back(i);
+        for (auto &[bucket, list] : minus)
+          std::sort(list.begin(),
+                    list.end(),
+                    [&](std::size_t a, std::size_t b) {
+                      return by_class[k][a].lo < by_class[k][b].lo;
+                    });
+        std::vector<std::size_t> candidates;
+        for (std::size_t i = 0; i < by_class[k].size(); ++i)
+          {
+            const ClassFace &p = by_class[k][i];
+            if (!p.plus)
+              continue;
+            candidates.clear();
+            for (long long b = bucket_of(p.offset) - 1;
+                 b <= bucket_of(p.offset) + 1;
+                 ++b)
+              {
+                const auto list = minus.find(b);
+                if (list == minus.end())
+                  continue;
+                auto first =
+                  std::lower_bound(list->second.begin(),
+                                   list->second.end(),
+                                   p.lo - longest - tolerance,
+                                   [&](std::size_t a, double value) {
+                                     return by_class[k][a].lo < value;
+                                   });
+                for (; first != list->second.end() &&
+                       by_class[k][*first].lo <= p.hi + tolerance;
+                     ++first)
+                  candidates.push_back(*first);
+              }
+            for (auto it = candidates.begin(); it != candidates.end(); ++it)
+              {
+                const ClassFace &q        = by_class[k][*it];
+                const double     distance = q.offset - p.offset;
+                if (std::abs(distance) > near ||
+                    faces[p.face].block == faces[q.face].block ||
+                    std::min(p.hi, q.hi) - std::max(p.lo, q.lo) <= tolerance)
+                  continue;
+                const double overlap =
+                  dim == 2 ?
+                    std::min(p.hi, q.hi) - std::max(p.lo, q.lo) :
+                    overlap_area(polygon[i], polygon[*it]) /
+                      std::max(faces[p.face].diameter, faces[q.face].diameter);
+                if (overlap <= tolerance)
+                  continue;
+                if (std::abs(distance) > tolerance)
+                  {
+                    std::ostringstream message;
+                    message
+                      << "blocks " << faces[p.face].block << " and "
+                      << faces[q.face].block << " "
+                      << (distance > 0 ? "leave a gap of " : "overlap by ")
+                      << std::abs(distance)
+                      << " between faces that nearly coincide (near "
+                      << faces[p.face]
+                           .cell->face(faces[p.face].face_no)
+                           ->center()
+                      << "); move them together (to within " << tolerance
+                      << ") or further apart (more than " << near << ")";
+                    throw InputError(message.str());
+                  }
+                // Matching nodes: every node of either face inside the
+                // other has a coincident partner on it.
+                const FaceRecord<dim> &fp    = faces[p.face];
+                const FaceRecord<dim> &fq    = faces[q.face];
+                auto                   match = [&](const FaceRecord<dim> &a,
+                                 const FaceRecord<dim> &b,
+                                 const Polygon         &b_polygon,
+                                 const bool             a_is_lower) {
+                  for (const unsigned int node : a.nodes)
+                    {
+                      const dealii::Point<dim> x(
+                        as_tensor<dim>(result.node_position[node]));
+                      if (!inside(b_polygon, basis(x), tolerance, dim == 2))
+                        continue;
+                      int partner = -1;
+                      for (const unsigned int other : b.nodes)
+                        if (x.distance(dealii::Point<dim>(as_tensor<dim>(
+                              result.node_position[other]))) <= tolerance)
+                          partner = static_cast<int>(other);
+                      if (partner < 0)
+                        throw InputError(
+                          "non-matching nodes on the face shared by blocks " +
+                          std::to_string(a.block) + " and " +
+                          std::to_string(b.block) + ": " +
+                          result.describe_node(node) +
+                          " has no coincident node of block " +
+                          std::to_string(b.block) +
+                          "; node-to-node contact needs matching nodes, so "
+                                            "mesh the blocks' shared faces alike (block sides "
+                                            "multiples of the cell size)");
+                      const unsigned int lower =
+                        a_is_lower ? node : static_cast<unsigned int>(partner);
+                      const unsigned int upper =
+                        a_is_lower ? static_cast<unsigned int>(partner) : node;
+                      const auto key = std::minmax(lower, upper);
+                      joint_pairs[{key.first, key.second}].push_back(
+                        {key.first == lower ? n : -n, p.face, q.face});
+                    }
+                };
+                match(fp, fq, polygon[*it], true);
+                match(fq, fp, polygon[i], false);
+              }
+          }
       }
 
-    // Simpson weights of the joint faces, for the contact pressure.
-    for (const FaceRecord &face : faces)
-      if (face.contact)
-        for (unsigned int k = 0; k < 3; ++k)
-          result.contact_weight[face.node_dofs[k][face.axis]] +=
-            simpson[k] * (face.t1 - face.t0);
+    // One joint constraint per node pair and group of normals (a pair on
+    // two faces that make a corner gets two); the normal's canonical sign
+    // decides which node is the lower one.
+    struct JointRow
+    {
+      UnilateralConstraint<dim>            row;
+      std::array<std::set<std::size_t>, 2> faces;
+    };
+    std::vector<JointRow> joints;
+    for (const auto &[pair, records] : joint_pairs)
+      {
+        NormalGroups<dim> groups;
+        for (std::size_t r = 0; r < records.size(); ++r)
+          groups.add(records[r].normal, r);
+        for (const auto &group : groups.groups)
+          {
+            std::array<double, dim> n     = group.mean();
+            unsigned int            lower = pair.first, upper = pair.second;
+            if (classes.classify(n).second < 0)
+              {
+                std::swap(lower, upper);
+                for (double &c : n)
+                  c = -c;
+              }
+            JointRow joint{{ConstraintKind::joint, lower, upper, n, 0.0}, {}};
+            for (const std::size_t r : group.items)
+              for (const std::size_t f :
+                   {records[r].face_first, records[r].face_second})
+                joint.faces[faces[f].block == result.node_block[lower] ? 0 : 1]
+                  .insert(f);
+            joints.push_back(std::move(joint));
+          }
+      }
+    std::stable_sort(
+      joints.begin(), joints.end(), [&](const JointRow &a, const JointRow &b) {
+        const unsigned int ca = main_component(a.row.normal);
+        const unsigned int cb = main_component(b.row.normal);
+        const auto ka = std::make_pair(result.node_dofs[a.row.lower][ca],
+                                       result.node_dofs[a.row.upper][ca]);
+        const auto kb = std::make_pair(result.node_dofs[b.row.lower][cb],
+                                       result.node_dofs[b.row.upper][cb]);
+        return ka < kb;
+      });
+    for (const JointRow &joint : joints)
+      {
+        result.constraints.push_back(joint.row);
+        result.position.push_back(result.node_position[joint.row.lower]);
+        result.blocks.push_back({{result.node_block[joint.row.lower],
+                                  result.node_block[joint.row.upper]}});
+        constraint_faces.push_back(joint.faces);
+        const auto  &n        = joint.row.normal;
+        const double vertical = std::abs(n[1]);
+        if (vertical > 1 - 1e-12)
+          ++result.n_horizontal_joint;
+        else if (vertical < 1e-12 &&
+                 (std::abs(n[0]) > 1 - 1e-12 ||
+                  (dim == 3 && std::abs(n[dim - 1]) > 1 - 1e-12)))
+          ++result.n_vertical_joint;
+        else
+          ++result.n_inclined_joint;
+      }
 
-    result.n_dirichlet = static_cast<unsigned int>(
-      std::count(result.dirichlet.begin(), result.dirichlet.end(), 1));
+    // The weights: per node and direction class, int phi_node over the
+    // union of the faces of all its constraints in that direction (a node
+    // with two joints on one face counts the face once).
+    std::map<std::pair<unsigned int, unsigned int>, std::set<std::size_t>>
+                              faces_at;
+    std::vector<unsigned int> constraint_class(result.constraints.size());
+    for (std::size_t k = 0; k < result.constraints.size(); ++k)
+      {
+        const auto &c       = result.constraints[k];
+        constraint_class[k] = classes.classify(c.normal).first;
+        faces_at[{c.lower, constraint_class[k]}].insert(
+          constraint_faces[k][0].begin(), constraint_faces[k][0].end());
+        if (c.kind == ConstraintKind::joint)
+          faces_at[{c.upper, constraint_class[k]}].insert(
+            constraint_faces[k][1].begin(), constraint_faces[k][1].end());
+      }
+    std::map<std::pair<unsigned int, unsigned int>, double> weight_at;
+    for (const auto &[key, face_set] : faces_at)
+      {
+        double weight = 0;
+        for (const std::size_t f : face_set)
+          weight += node_weights(faces[f]).at(key.first);
+        weight_at[key] = weight;
+      }
+    for (std::size_t k = 0; k < result.constraints.size(); ++k)
+      {
+        const auto  &c     = result.constraints[k];
+        const double lower = weight_at.at({c.lower, constraint_class[k]});
+        result.weight.push_back(
+          {{lower,
+            c.kind == ConstraintKind::joint ?
+              weight_at.at({c.upper, constraint_class[k]}) :
+              lower}});
+      }
     return result;
   }
+
+  template struct ContactSet<2>;
+  template struct ContactSet<3>;
+  template ContactSet<2>
+  detect_contacts<2>(const dealii::DoFHandler<2, 2> &,
+                     const dealii::Mapping<2, 2> &,
+                     const Supports<2> &,
+                     double,
+                     double);
+  template ContactSet<3>
+  detect_contacts<3>(const dealii::DoFHandler<3, 3> &,
+                     const dealii::Mapping<3, 3> &,
+                     const Supports<3> &,
+                     double,
+                     double);
+  template std::string
+  describe_point<2>(const std::array<double, 2> &, unsigned int);
+  template std::string
+  describe_point<3>(const std::array<double, 3> &, unsigned int);
 } // namespace unilateral::masonry

@@ -1,108 +1,213 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/text.h>
+#include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/masonry/assembly.h>
 #include <unilateral/scenes/masonry/mesh.h>
+#include <unilateral/scenes/masonry/mesh_file.h>
 
 #include "scene_state.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
-#include <optional>
 #include <ostream>
+#include <sstream>
 
 namespace unilateral::masonry
 {
+  template <int dim>
   void
-  MasonryScene::declare_parameters(dealii::ParameterHandler &prm)
+  MasonryScene<dim>::declare_parameters(dealii::ParameterHandler &prm)
   {
     Parameters::declare_parameters(prm);
   }
 
-  MasonryScene::MasonryScene(dealii::ParameterHandler &prm)
-    : Scene(registered_name)
-  {
-    parameters.parse_parameters(prm);
-  }
-
-  MasonryScene::MasonryScene(const Parameters &parameters)
+  template <int dim>
+  MasonryScene<dim>::MasonryScene(const Parameters &parameters)
     : Scene(registered_name)
     , parameters(parameters)
   {}
 
-  MasonryScene::MasonryScene(const Parameters &parameters, const Layout &layout)
+  template <int dim>
+  MasonryScene<dim>::MasonryScene(const Parameters &parameters,
+                                  const Layout     &layout)
     : Scene(registered_name)
     , parameters(parameters)
     , custom_layout(std::make_unique<Layout>(layout))
   {}
 
-  MasonryScene::~MasonryScene() = default;
+  template <int dim>
+  MasonryScene<dim>::~MasonryScene() = default;
 
-  const ContactSet &
-  MasonryScene::contact_set() const
+  template <int dim>
+  const ContactSet<dim> &
+  MasonryScene<dim>::contact_set() const
   {
     return state->contacts;
   }
 
-  const ChangeOfVariables &
-  MasonryScene::change_of_variables() const
+  template <int dim>
+  const ChangeOfVariables<dim> &
+  MasonryScene<dim>::change_of_variables() const
   {
     return *state->change;
   }
 
+  template <int dim>
   double
-  MasonryScene::force_unit() const
+  MasonryScene<dim>::force_unit() const
   {
     return unit;
   }
 
-  void
-  MasonryScene::make_grid(RunContext &context)
+  template <int dim>
+  std::string
+  MasonryScene<dim>::structure_name() const
   {
-    state         = std::make_unique<State>(parameters.geometry.element);
-    state->layout = custom_layout ? *custom_layout :
-                                    make_layout(parameters.geometry.bond,
-                                                parameters.geometry.m);
-    validate(state->layout);
-    state->class_of_block =
-      parameters.materials.classes_of_blocks(state->layout);
+    return state->mesh_file.empty() ? state->layout.name : state->mesh_file;
+  }
 
-    const double H = state->layout.course_height;
-    const double h = H / std::pow(2.0, parameters.geometry.refinement);
-    build_triangulation(state->layout,
-                        h,
-                        parameters.geometry.element,
-                        state->discretisation.triangulation);
+  namespace
+  {
+    /// The class of each block of a mesh file, from its physical tag.
+    std::vector<unsigned int>
+    classes_of_tags(const MaterialParameters &materials,
+                    const MeshFileBlocks     &blocks,
+                    const std::string        &file)
+    {
+      std::vector<unsigned int> result(blocks.tag_of_block.size(), 0);
+      if (materials.assignment != MaterialAssignment::physical_tag)
+        return result;
+      for (std::size_t b = 0; b < result.size(); ++b)
+        {
+          const auto &tags = materials.tags;
+          auto        found =
+            std::find(tags.begin(), tags.end(), blocks.tag_of_block[b]);
+          if (found == tags.end())
+            found = std::find(tags.begin(),
+                              tags.end(),
+                              std::to_string(blocks.tag_number_of_block[b]));
+          if (found == tags.end())
+            {
+              std::string known;
+              for (const std::string &tag : tags)
+                known += (known.empty() ? "" : ", ") + tag;
+              throw InputError(
+                "block " + std::to_string(b) + " of '" + file +
+                "' has the physical tag '" + blocks.tag_of_block[b] +
+                "', which no material class has ('Masonry/Materials/Tags' = " +
+                known + "): add it to 'Tags' with its class");
+            }
+          result[b] = static_cast<unsigned int>(found - tags.begin());
+        }
+      return result;
+    }
 
-    problem_sizes = Sizes();
-    problem_sizes.n_blocks =
-      static_cast<unsigned int>(state->layout.blocks.size());
-    problem_sizes.n_cells =
-      state->discretisation.triangulation.n_active_cells();
-    problem_sizes.block_height = H;
-    problem_sizes.cell_size    = h;
-    problem_sizes.gap          = parameters.boundary.relative_gap * H;
+    /// Whether the point @p x lies in the bounding box (x_min, x_max).
+    template <int dim>
+    double
+    extent(const dealii::Triangulation<dim> &triangulation,
+           const unsigned int                axis,
+           const bool                        upper)
+    {
+      double value = upper ? -std::numeric_limits<double>::max() :
+                             std::numeric_limits<double>::max();
+      for (const auto &vertex : triangulation.get_vertices())
+        value =
+          upper ? std::max(value, vertex[axis]) : std::min(value, vertex[axis]);
+      return value;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  MasonryScene<dim>::make_grid(RunContext &context)
+  {
+    const GeometryParameters &geometry = parameters.geometry;
+    problem_sizes                      = Sizes();
+    ExpressionConstants constants;
+    if (geometry.from_mesh_file)
+      {
+        const std::string path =
+          resolve_relative_to(context.parameter_file, geometry.mesh_file);
+        dealii::Triangulation<dim> mesh;
+        const MeshFileBlocks       blocks = read_mesh_file<dim>(path, mesh);
+        mesh.refine_global(geometry.refinement);
+        state = std::make_unique<State>(blocks.simplex ? ElementType::p2 :
+                                                         ElementType::q2);
+        state->discretisation.triangulation.copy_triangulation(mesh);
+        state->mesh_file  = std::filesystem::path(path).filename().string();
+        state->boundaries = blocks.boundaries;
+        state->class_of_block =
+          classes_of_tags(parameters.materials, blocks, state->mesh_file);
+        problem_sizes.n_blocks =
+          static_cast<unsigned int>(blocks.tag_of_block.size());
+        problem_sizes.block_height = 1;
+        double smallest            = std::numeric_limits<double>::max();
+        for (const auto &cell :
+             state->discretisation.triangulation.active_cell_iterators())
+          smallest = std::min(smallest, cell->minimum_vertex_distance());
+        problem_sizes.cell_size = smallest;
+      }
+    else
+      {
+        state         = std::make_unique<State>(geometry.element);
+        state->layout = custom_layout ? *custom_layout :
+                                        make_layout(geometry.bond, geometry.m);
+        validate(state->layout);
+        const std::vector<unsigned int> classes =
+          parameters.materials.classes_of_blocks(state->layout);
+        const unsigned int layers =
+          dim == 3 ? geometry.blocks_through_thickness : 1;
+        for (const unsigned int c : classes)
+          state->class_of_block.insert(state->class_of_block.end(), layers, c);
+        const double H = state->layout.course_height;
+        const double h = H / std::pow(2.0, geometry.refinement);
+        build_triangulation<dim>(state->layout,
+                                 h,
+                                 geometry.element,
+                                 geometry.blocks_through_thickness,
+                                 geometry.thickness * H,
+                                 state->discretisation.triangulation);
+        state->boundaries =
+          wall_boundary_names<dim>(state->discretisation.triangulation);
+        problem_sizes.n_blocks =
+          static_cast<unsigned int>(state->layout.blocks.size()) * layers;
+        problem_sizes.block_height = H;
+        problem_sizes.cell_size    = h;
+      }
+    const dealii::Triangulation<dim> &triangulation =
+      state->discretisation.triangulation;
+    problem_sizes.n_cells = triangulation.n_active_cells();
+    problem_sizes.gap =
+      parameters.boundary.relative_gap * problem_sizes.block_height;
+    constants.H     = problem_sizes.block_height;
+    constants.g     = problem_sizes.gap;
+    const double x0 = extent(triangulation, 0, false);
+    constants.s     = x0 + parameters.boundary.signorini_fraction *
+                         (extent(triangulation, 0, true) - x0);
+    state->supports =
+      make_supports<dim>(parameters.boundary, state->boundaries, constants);
+    state->loads.classes        = parameters.materials.classes;
+    state->loads.class_of_block = state->class_of_block;
+    state->loads.supports       = &state->supports;
     context.stage(registered_name,
                   quantity(problem_sizes.n_blocks, "block") + ", " +
                     quantity(problem_sizes.n_cells, "cell"));
   }
 
-  // Points closer than this are the same point: far above the round-off
-  // in the coordinates, far below the node spacing h/2.
-  double
-  MasonryScene::coincidence_tolerance() const
-  {
-    return 1e-8 * problem_sizes.cell_size;
-  }
-
+  template <int dim>
   void
-  MasonryScene::setup_system(RunContext &context)
+  MasonryScene<dim>::setup_system(RunContext &context)
   {
     {
-      Discretisation &discretisation = state->discretisation;
+      Discretisation<dim> &discretisation = state->discretisation;
       discretisation.dof_handler.reinit(discretisation.triangulation);
       discretisation.dof_handler.distribute_dofs(*discretisation.fe);
       problem_sizes.n_dofs = discretisation.dof_handler.n_dofs();
@@ -110,41 +215,30 @@ namespace unilateral::masonry
     context.stage(registered_name,
                   std::to_string(problem_sizes.n_dofs) +
                     " DOFs; detecting contacts");
-    {
-      state->contacts = detect_contacts(state->discretisation.dof_handler,
-                                        parameters.boundary.signorini_fraction,
-                                        problem_sizes.gap,
-                                        coincidence_tolerance());
-    }
-    {
-      const ContactSet &contacts = state->contacts;
-      // Only cycles among constrained DOFs can fail, so the constraint list
-      // names every DOF an error message needs.
-      auto describe = [&contacts](const DofIndex dof) {
-        for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
-          if (contacts.constraints[k].lower == dof ||
-              (contacts.constraints[k].kind != ConstraintKind::signorini &&
-               contacts.constraints[k].upper == dof))
-            return "the node at " +
-                   describe_point(contacts.position[k][0],
-                                  contacts.position[k][1],
-                                  contacts.constraints[k].lower == dof ?
-                                    contacts.blocks[k][0] :
-                                    contacts.blocks[k][1]);
-        return "DOF " + std::to_string(dof);
-      };
-      state->change = std::make_unique<ChangeOfVariables>(problem_sizes.n_dofs,
-                                                          contacts.dirichlet,
-                                                          contacts.constraints,
-                                                          describe);
-    }
-    const ContactSet &contacts         = state->contacts;
-    problem_sizes.n_dirichlet          = contacts.n_dirichlet;
+    state->contacts =
+      detect_contacts<dim>(state->discretisation.dof_handler,
+                           *state->discretisation.mapping,
+                           state->supports,
+                           parameters.geometry.coincidence_tolerance *
+                             problem_sizes.cell_size,
+                           problem_sizes.cell_size);
+    const ContactSet<dim> &contacts = state->contacts;
+    state->change                   = std::make_unique<ChangeOfVariables<dim>>(
+      problem_sizes.n_dofs,
+      contacts.node_dofs,
+      contacts.held,
+      contacts.rollers,
+      contacts.constraints,
+      [&contacts](const unsigned int node) {
+        return contacts.describe_node(node);
+      });
+    problem_sizes.n_dirichlet          = contacts.n_eliminated();
     problem_sizes.n_unknowns           = state->change->n_unknowns();
     problem_sizes.n_constraints        = state->change->n_constraints();
     problem_sizes.n_signorini          = contacts.n_signorini;
     problem_sizes.n_horizontal_joint   = contacts.n_horizontal_joint;
     problem_sizes.n_vertical_joint     = contacts.n_vertical_joint;
+    problem_sizes.n_inclined_joint     = contacts.n_inclined_joint;
     problem_sizes.max_expansion_length = state->change->max_expansion_length();
     context.stage(registered_name,
                   "n = " + std::to_string(problem_sizes.n_unknowns) +
@@ -153,21 +247,16 @@ namespace unilateral::masonry
                     " constraints");
   }
 
+  template <int dim>
   void
-  MasonryScene::assemble_system(RunContext &context)
+  MasonryScene<dim>::assemble_system(RunContext &context)
   {
     context.stage(registered_name, "assembling A~ and b~ in the gap variables");
-    LoadData loads;
-    loads.classes        = parameters.materials.classes;
-    loads.class_of_block = state->class_of_block;
-    loads.gravity        = parameters.boundary.gravity;
-    loads.top_traction   = parameters.boundary.top_traction;
-    loads.y_top          = state->layout.bounding_box().y1;
-    loads.tolerance      = coincidence_tolerance();
-    lcp_problem          = assemble_lcp(state->discretisation,
-                               *state->change,
-                               state->contacts,
-                               loads);
+    lcp_problem = assemble_lcp<dim>(state->discretisation,
+                                    *state->change,
+                                    state->contacts,
+                                    state->loads,
+                                    energy_offset);
     // Blocks are free to move unless contacts hold them, and a wall is in
     // contact almost everywhere: the solvers' automatic settings for both.
     // A~ = C~^-T A C~^-1 is a congruence of the semidefinite stiffness.
@@ -194,11 +283,12 @@ namespace unilateral::masonry
   }
 
   // u = C~^-1 u~, and for every constraint its normal gap (the gap variable,
-  // or u_y + g on Gamma_S), its force lambda and whether it is active.
+  // or n . u + gap on a support), its force lambda and whether it is active.
+  template <int dim>
   void
-  MasonryScene::postprocess(const RunContext &, lcp::Report &report)
+  MasonryScene<dim>::postprocess(const RunContext &, lcp::Report &report)
   {
-    report.energy *= unit;
+    report.energy = report.energy * unit + energy_offset;
     report.regularisation *= unit;
     const lcp::Solution &solution = lcp_solution;
     state->displacement = state->change->to_physical(solution.u.data());
@@ -206,7 +296,7 @@ namespace unilateral::masonry
     std::vector<char> active(lcp_problem.size(), 0);
     for (const lcp::Index i : solution.active_set)
       active[i] = 1;
-    const ContactSet &contacts = state->contacts;
+    const ContactSet<dim> &contacts = state->contacts;
     constraints.resize(contacts.constraints.size());
     n_closed_contacts = 0;
     for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
@@ -215,28 +305,22 @@ namespace unilateral::masonry
         constraints[k] = {contacts.constraints[k].kind,
                           contacts.position[k],
                           contacts.blocks[k],
+                          contacts.constraints[k].normal,
                           solution.u[v] - contacts.constraints[k].bound,
                           solution.lambda[v] * unit,
                           active[v] != 0};
         n_closed_contacts += active[v];
       }
 
-    // Largest nodal displacement: pair the two components of each node.
-    const dealii::DoFHandler<2> &dof_handler =
-      state->discretisation.dof_handler;
-    const dealii::FiniteElement<2> &fe  = dof_handler.get_fe();
-    const unsigned int n_nodes_per_cell = fe.base_element(0).n_dofs_per_cell();
-    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    double                                       largest = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    double largest = 0;
+    for (const auto &dofs : contacts.node_dofs)
       {
-        cell->get_dof_indices(dofs);
-        for (unsigned int k = 0; k < n_nodes_per_cell; ++k)
-          largest = std::max(
-            largest,
-            std::hypot(
-              state->displacement[dofs[fe.component_to_system_index(0, k)]],
-              state->displacement[dofs[fe.component_to_system_index(1, k)]]));
+        std::array<double, dim> u;
+        for (unsigned int d = 0; d < dim; ++d)
+          u[d] = state->displacement[dofs[d]];
+        largest = std::max(largest,
+                           dim == 2 ? std::hypot(u[0], u[1]) :
+                                      std::hypot(u[0], u[1], u[dim - 1]));
       }
     max_displacement = largest;
 
@@ -248,66 +332,211 @@ namespace unilateral::masonry
     // README.md, "The masonry scene"). Counted so that the summary can say
     // so.
     double largest_force = 0;
-    for (const ConstraintResult &c : constraints)
+    for (const ConstraintResult<dim> &c : constraints)
       largest_force = std::max(largest_force, std::abs(c.contact_force));
     n_degenerate_contacts = 0;
-    for (const ConstraintResult &c : constraints)
+    for (const ConstraintResult<dim> &c : constraints)
       n_degenerate_contacts +=
         std::abs(c.normal_gap) <= 1e-10 * max_displacement &&
         std::abs(c.contact_force) <= 1e-10 * largest_force;
+    if (report.converged())
+      compute_statics();
   }
 
-  std::vector<NodalDisplacement>
-  MasonryScene::nodal_displacements() const
+  /**
+   * The supports' reactions from the solution: a Signorini support's from
+   * its multipliers (lambda n), a held node's and a roller's from the
+   * residual K u - f at the node less the forces of the constraints there
+   * (a roller's projected on its normal). Their sum balances the loads
+   * only if the answer is in equilibrium: at every free DOF K u - f = 0, at
+   * every joint the residuals of the two nodes are the multiplier's
+   * +-lambda n, and at a roller the residual is normal to it.
+   */
+  template <int dim>
+  void
+  MasonryScene<dim>::compute_statics()
   {
-    const dealii::DoFHandler<2> &dof_handler =
-      state->discretisation.dof_handler;
-    const dealii::FiniteElement<2> &fe      = dof_handler.get_fe();
-    const dealii::Mapping<2>       &mapping = *state->discretisation.mapping;
-    const auto &unit_points = fe.base_element(0).get_unit_support_points();
-    const unsigned int n_nodes_per_cell = unit_points.size();
-    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<char>                            seen(dof_handler.n_dofs(), 0);
-    std::vector<NodalDisplacement>               result;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    const ContactSet<dim>     &contacts = state->contacts;
+    const std::vector<double> &u        = state->displacement;
+    std::vector<double>        residual =
+      residual_forces<dim>(state->discretisation, state->loads, u);
+    balance = Statics<dim>();
+
+    // The loads: -residual at zero displacement (body force, tractions).
+    const std::vector<double> load =
+      residual_forces<dim>(state->discretisation,
+                           state->loads,
+                           std::vector<double>(u.size(), 0.0));
+    auto moment = [](const std::array<double, dim> &x,
+                     const std::array<double, dim> &f) {
+      if constexpr (dim == 2)
+        return std::array<double, 3>{{0, 0, x[0] * f[1] - x[1] * f[0]}};
+      else
+        return std::array<double, 3>{{x[1] * f[2] - x[2] * f[1],
+                                      x[2] * f[0] - x[0] * f[2],
+                                      x[0] * f[1] - x[1] * f[0]}};
+    };
+    auto add = [&](std::array<double, dim>       &force,
+                   std::array<double, 3>         &torque,
+                   const std::array<double, dim> &x,
+                   const std::array<double, dim> &f) {
+      const auto m = moment(x, f);
+      for (unsigned int d = 0; d < dim; ++d)
+        force[d] += f[d];
+      for (unsigned int d = 0; d < 3; ++d)
+        torque[d] += m[d];
+    };
+    double size = 0;
+    for (std::size_t a = 0; a < contacts.node_dofs.size(); ++a)
       {
-        cell->get_dof_indices(dofs);
-        for (unsigned int k = 0; k < n_nodes_per_cell; ++k)
+        std::array<double, dim> f;
+        for (unsigned int d = 0; d < dim; ++d)
+          f[d] = -load[contacts.node_dofs[a][d]];
+        add(balance.load, balance.load_moment, contacts.node_position[a], f);
+        for (unsigned int d = 0; d < dim; ++d)
+          size = std::max(size, std::abs(contacts.node_position[a][d]));
+      }
+
+    // Remove the constraints' forces from the residual at their nodes.
+    balance.support = contacts.support_names;
+    balance.reaction.assign(balance.support.size(), {});
+    balance.reaction_moment.assign(balance.support.size(), {});
+    for (std::size_t k = 0; k < constraints.size(); ++k)
+      {
+        const auto             &c     = contacts.constraints[k];
+        const auto             &n     = c.normal;
+        const double            force = constraints[k].contact_force;
+        std::array<double, dim> f;
+        for (unsigned int d = 0; d < dim; ++d)
+          f[d] = force * n[d];
+        if (c.kind == ConstraintKind::signorini)
           {
-            const auto dof_x = dofs[fe.component_to_system_index(0, k)];
-            const auto dof_y = dofs[fe.component_to_system_index(1, k)];
-            if (seen[dof_x])
-              continue;
-            seen[dof_x] = 1;
-            const dealii::Point<2> p =
-              mapping.transform_unit_to_real_cell(cell, unit_points[k]);
-            result.push_back(
-              {{{p[0], p[1]}},
-               cell->material_id(),
-               {{state->displacement[dof_x], state->displacement[dof_y]}}});
+            const unsigned int s = contacts.signorini_support[k];
+            add(balance.reaction[s],
+                balance.reaction_moment[s],
+                contacts.node_position[c.lower],
+                f);
+            for (unsigned int d = 0; d < dim; ++d)
+              residual[contacts.node_dofs[c.lower][d]] -= f[d];
           }
+        else
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              residual[contacts.node_dofs[c.upper][d]] -= f[d];
+              residual[contacts.node_dofs[c.lower][d]] += f[d];
+            }
+      }
+    for (std::size_t h = 0; h < contacts.held.size(); ++h)
+      {
+        const unsigned int      node = contacts.held[h].node;
+        std::array<double, dim> f;
+        for (unsigned int d = 0; d < dim; ++d)
+          f[d] = residual[contacts.node_dofs[node][d]];
+        add(balance.reaction[contacts.held_support[h]],
+            balance.reaction_moment[contacts.held_support[h]],
+            contacts.node_position[node],
+            f);
+      }
+    // Rollers: the residual at a node resolved along its rollers' normals
+    // (least squares; exact if it lies in their span, as it does at
+    // equilibrium).
+    for (std::size_t r = 0; r < contacts.rollers.size();)
+      {
+        const unsigned int node = contacts.rollers[r].node;
+        std::size_t        end  = r;
+        while (end < contacts.rollers.size() &&
+               contacts.rollers[end].node == node)
+          ++end;
+        const unsigned int n_rollers = static_cast<unsigned int>(end - r);
+        dealii::FullMatrix<double> gram(n_rollers, n_rollers);
+        dealii::Vector<double>     rhs(n_rollers), coefficient(n_rollers);
+        for (unsigned int i = 0; i < n_rollers; ++i)
+          {
+            const auto &ni = contacts.rollers[r + i].normal;
+            for (unsigned int d = 0; d < dim; ++d)
+              rhs[i] += ni[d] * residual[contacts.node_dofs[node][d]];
+            for (unsigned int j = 0; j < n_rollers; ++j)
+              for (unsigned int d = 0; d < dim; ++d)
+                gram(i, j) += ni[d] * contacts.rollers[r + j].normal[d];
+          }
+        gram.gauss_jordan();
+        gram.vmult(coefficient, rhs);
+        for (unsigned int i = 0; i < n_rollers; ++i)
+          {
+            std::array<double, dim> f;
+            for (unsigned int d = 0; d < dim; ++d)
+              f[d] = coefficient[i] * contacts.rollers[r + i].normal[d];
+            add(balance.reaction[contacts.roller_support[r + i]],
+                balance.reaction_moment[contacts.roller_support[r + i]],
+                contacts.node_position[node],
+                f);
+          }
+        r = end;
+      }
+
+    std::array<double, dim> force  = balance.load;
+    std::array<double, 3>   torque = balance.load_moment;
+    for (std::size_t s = 0; s < balance.support.size(); ++s)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          force[d] += balance.reaction[s][d];
+        for (unsigned int d = 0; d < 3; ++d)
+          torque[d] += balance.reaction_moment[s][d];
+      }
+    auto norm = [](const auto &v) {
+      double sum = 0;
+      for (const double x : v)
+        sum += x * x;
+      return std::sqrt(sum);
+    };
+    const double loads      = norm(balance.load);
+    balance.force_imbalance = loads > 0 ? norm(force) / loads : norm(force);
+    balance.moment_imbalance =
+      loads > 0 ? norm(torque) / (loads * std::max(size, 1e-300)) :
+                  norm(torque);
+  }
+
+  template <int dim>
+  std::vector<NodalDisplacement<dim>>
+  MasonryScene<dim>::nodal_displacements() const
+  {
+    const ContactSet<dim>              &contacts = state->contacts;
+    std::vector<NodalDisplacement<dim>> result(contacts.node_dofs.size());
+    for (std::size_t a = 0; a < result.size(); ++a)
+      {
+        result[a].position = contacts.node_position[a];
+        result[a].block    = contacts.node_block[a];
+        for (unsigned int d = 0; d < dim; ++d)
+          result[a].displacement[d] =
+            state->displacement[contacts.node_dofs[a][d]];
       }
     return result;
   }
 
+  template <int dim>
   void
-  MasonryScene::print_summary(std::ostream      &out,
-                              const lcp::Report &report) const
+  MasonryScene<dim>::print_summary(std::ostream      &out,
+                                   const lcp::Report &report) const
   {
     const auto   flags     = out.flags();
     const auto   precision = out.precision();
     const Sizes &s         = problem_sizes;
-    out << "  masonry: " << state->layout.name
-        << ", m = " << parameters.geometry.m << " (H = " << s.block_height
-        << "), " << quantity(s.n_blocks, "block") << ", "
-        << to_string(parameters.geometry.element) << " on "
+    out << "  masonry: " << structure_name();
+    if (state->mesh_file.empty())
+      out << ", m = " << parameters.geometry.m << " (H = " << s.block_height
+          << ")";
+    out << (dim == 3 ? ", 3D" : "") << ", " << quantity(s.n_blocks, "block")
+        << ", " << to_string(state->discretisation.element) << " on "
         << quantity(s.n_cells, "cell") << " (refinement "
         << parameters.geometry.refinement << ", h = " << s.cell_size << ")\n"
         << "  supports: " << quantity(s.n_dirichlet, "Dirichlet DOF") << ", "
         << quantity(s.n_signorini, "Signorini node")
         << " with gap g = " << s.gap << "; joints: " << s.n_horizontal_joint
         << " horizontal + "
-        << quantity(s.n_vertical_joint, "vertical node pair") << "\n";
+        << quantity(s.n_vertical_joint, "vertical node pair");
+    if (s.n_inclined_joint > 0)
+      out << " + " << s.n_inclined_joint << " inclined";
+    out << "\n";
     print_solver_summary(out, lcp_problem, report);
     out << std::scientific << std::setprecision(6) << "  max displacement "
         << max_displacement << ", " << n_closed_contacts << " of "
@@ -318,19 +547,26 @@ namespace unilateral::masonry
           << " no force (degenerate): where such "
              "contacts alone hold a block, other displacements with the same "
              "energy and contact forces solve the problem too\n";
+    if (report.converged() &&
+        std::max(balance.force_imbalance, balance.moment_imbalance) > 1e-8)
+      out << std::setprecision(1) << "  warning: the supports' reactions "
+          << "balance the loads only to " << balance.force_imbalance
+          << " (force) and " << balance.moment_imbalance << " (moment)\n";
     out.flags(flags);
     out.precision(precision);
   }
 
+  template <int dim>
   void
-  MasonryScene::add_summary(JsonObject &summary) const
+  MasonryScene<dim>::add_summary(JsonObject &summary) const
   {
     const Sizes &s = problem_sizes;
-    summary.set("geometry", state->layout.name)
+    summary.set("geometry", structure_name())
+      .set("dimension", dim)
       .set("m", parameters.geometry.m)
       .set("n_blocks", s.n_blocks)
       .set("refinement", parameters.geometry.refinement)
-      .set("element", to_string(parameters.geometry.element))
+      .set("element", to_string(state->discretisation.element))
       .set("block_height", s.block_height)
       .set("cell_size", s.cell_size)
       .set("gap", s.gap)
@@ -341,44 +577,99 @@ namespace unilateral::masonry
       .set("n_signorini", s.n_signorini)
       .set("n_horizontal_joint", s.n_horizontal_joint)
       .set("n_vertical_joint", s.n_vertical_joint)
+      .set("n_inclined_joint", s.n_inclined_joint)
       .set("max_displacement", max_displacement)
       .set("n_closed_contacts", n_closed_contacts)
       .set("n_degenerate_contacts", n_degenerate_contacts);
+    JsonObject &statics = summary.object("statics");
+    auto        list    = [](const auto &v) {
+      return std::vector<double>(v.begin(), v.end());
+    };
+    statics.set("load", list(balance.load))
+      .set("load_moment", list(balance.load_moment))
+      .set("force_imbalance", balance.force_imbalance)
+      .set("moment_imbalance", balance.moment_imbalance);
+    JsonObject &reactions = statics.object("reactions");
+    for (std::size_t k = 0; k < balance.support.size(); ++k)
+      reactions.object(balance.support[k])
+        .set("force", list(balance.reaction[k]))
+        .set("moment", list(balance.reaction_moment[k]));
   }
 
+  template <int dim>
   std::string
-  MasonryScene::failure_description(const lcp::Report &report) const
+  MasonryScene<dim>::failure_description(const lcp::Report &report) const
   {
+    const std::string structure =
+      state && !state->mesh_file.empty() ? "the structure" : "the wall";
     if (report.status == lcp::Status::infeasible)
-      return "the wall has no equilibrium: its supports and joints cannot "
+      return structure +
+             " has no equilibrium: its supports and joints cannot "
              "carry the loads (" +
              report.message + ")";
     if (report.status == lcp::Status::singular)
       return "the solver found no configuration in which every block is "
-             "held by a support or a closed joint: the wall has no "
-             "equilibrium, or a block can move freely (" +
+             "held by a support or a closed joint: " +
+             structure + " has no equilibrium, or a block can move freely (" +
              report.message + ")";
     return Scene::failure_description(report);
   }
 
+  template <int dim>
   bool
-  MasonryScene::large(const std::string &) const
+  MasonryScene<dim>::large(const std::string &parameter_file) const
   {
-    return parameters.geometry.m * (1L << parameters.geometry.refinement) >=
-           100;
+    if (parameters.geometry.from_mesh_file)
+      {
+        std::error_code error;
+        const auto      bytes = std::filesystem::file_size(
+          resolve_relative_to(parameter_file, parameters.geometry.mesh_file),
+          error);
+        return !error &&
+               (bytes << (dim * parameters.geometry.refinement)) >= 5000000;
+      }
+    const long cells_per_side =
+      parameters.geometry.m * (1L << parameters.geometry.refinement);
+    return cells_per_side >= (dim == 2 ? 100 : 40);
   }
 
+  template <int dim>
   std::string
-  MasonryScene::size_parameters() const
+  MasonryScene<dim>::size_parameters() const
   {
+    const std::string refinement =
+      " or 'Masonry/Refinement' = " +
+      std::to_string(parameters.geometry.refinement);
+    if (parameters.geometry.from_mesh_file)
+      return "'Masonry/Mesh file' = " + parameters.geometry.mesh_file +
+             refinement;
     return "'Masonry/Blocks per side' = " +
-           std::to_string(parameters.geometry.m) +
-           " or 'Masonry/Refinement' = " +
-           std::to_string(parameters.geometry.refinement);
+           std::to_string(parameters.geometry.m) + refinement;
   }
 
-  UNILATERAL_REGISTER_SCENE(
-    MasonryScene,
-    "a wall of elastic blocks in frictionless contact (Ainsworth & Mihai "
-    "2006): stack bond, running bond or laminae")
+  std::unique_ptr<Scene>
+  create_masonry_scene(dealii::ParameterHandler &prm)
+  {
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    if (parameters.geometry.dimension == 3)
+      return std::make_unique<MasonryScene<3>>(parameters);
+    return std::make_unique<MasonryScene<2>>(parameters);
+  }
+
+  template class MasonryScene<2>;
+  template class MasonryScene<3>;
+
+  namespace
+  {
+    const bool registered = SceneRegistry::add(
+      {MasonryScene<2>::registered_name,
+       "assemblies of elastic blocks in frictionless contact, 2D or 3D "
+       "(Ainsworth & Mihai 2006): the paper's walls (stack bond, running "
+       "bond, laminae) or blocks from a Gmsh file",
+       [](dealii::ParameterHandler &prm) {
+         MasonryScene<2>::declare_parameters(prm);
+       },
+       create_masonry_scene});
+  } // namespace
 } // namespace unilateral::masonry

@@ -4,6 +4,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace unilateral::masonry
@@ -17,7 +18,7 @@ namespace unilateral::masonry
         std::max(1.0, std::round(length / cell_size)));
     }
 
-    // Node i of n + 1 along [a, b]; the ends are a and b exactly, so edges
+    // Node i of n + 1 along [a, b]; the ends are a and b exactly, so faces
     // shared by two blocks get bitwise equal end coordinates.
     double
     along(const double       a,
@@ -31,76 +32,214 @@ namespace unilateral::masonry
         return b;
       return a + (b - a) * static_cast<double>(i) / static_cast<double>(n);
     }
+
+    /// A box block [x0, x1] x [y0, y1] (x [z0, z1]) and its cell counts.
+    struct Box
+    {
+      std::array<double, 3>       lo, hi;
+      std::array<unsigned int, 3> n;
+    };
+
+    /// Six tetrahedra around the main diagonal 0-7 of a cube (vertex i at
+    /// bit 0: x, bit 1: y, bit 2: z), each by a path 0 -> 7 along edges.
+    constexpr std::array<std::array<unsigned int, 4>, 6> kuhn = {
+      {{{0, 1, 3, 7}},
+       {{0, 1, 5, 7}},
+       {{0, 2, 3, 7}},
+       {{0, 2, 6, 7}},
+       {{0, 4, 5, 7}},
+       {{0, 4, 6, 7}}}};
+
+    template <int dim>
+    void
+    add_cells(const Box                          &box,
+              const unsigned int                  block,
+              const bool                          simplex,
+              std::vector<dealii::Point<dim>>    &vertices,
+              std::vector<dealii::CellData<dim>> &cells)
+    {
+      const auto         first = static_cast<unsigned int>(vertices.size());
+      const unsigned int nz    = dim == 3 ? box.n[2] : 0;
+      for (unsigned int k = 0; k <= nz; ++k)
+        for (unsigned int j = 0; j <= box.n[1]; ++j)
+          for (unsigned int i = 0; i <= box.n[0]; ++i)
+            {
+              dealii::Point<dim> p;
+              p[0] = along(box.lo[0], box.hi[0], i, box.n[0]);
+              p[1] = along(box.lo[1], box.hi[1], j, box.n[1]);
+              if constexpr (dim == 3)
+                p[2] = along(box.lo[2], box.hi[2], k, box.n[2]);
+              vertices.push_back(p);
+            }
+      auto vertex =
+        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+          return first + (k * (box.n[1] + 1) + j) * (box.n[0] + 1) + i;
+        };
+      auto add = [&](std::vector<unsigned int> cell_vertices) {
+        if constexpr (dim == 3)
+          if (cell_vertices.size() == 4)
+            {
+              // Positive orientation, as deal.II's tetrahedra need.
+              const auto                &v = vertices;
+              const dealii::Tensor<1, 3> a =
+                v[cell_vertices[1]] - v[cell_vertices[0]];
+              const dealii::Tensor<1, 3> b =
+                v[cell_vertices[2]] - v[cell_vertices[0]];
+              const dealii::Tensor<1, 3> c =
+                v[cell_vertices[3]] - v[cell_vertices[0]];
+              if (dealii::cross_product_3d(a, b) * c < 0)
+                std::swap(cell_vertices[1], cell_vertices[2]);
+            }
+        dealii::CellData<dim> cell(cell_vertices.size());
+        cell.vertices    = cell_vertices;
+        cell.material_id = static_cast<dealii::types::material_id>(block);
+        cells.push_back(std::move(cell));
+      };
+      for (unsigned int k = 0; k < std::max(nz, 1u); ++k)
+        for (unsigned int j = 0; j < box.n[1]; ++j)
+          for (unsigned int i = 0; i < box.n[0]; ++i)
+            {
+              std::array<unsigned int, 8> v;
+              for (unsigned int corner = 0; corner < (dim == 2 ? 4u : 8u);
+                   ++corner)
+                v[corner] = vertex(i + (corner & 1),
+                                   j + ((corner >> 1) & 1),
+                                   k + ((corner >> 2) & 1));
+              if (!simplex)
+                // deal.II's lexicographic vertex order is the bit order.
+                add(std::vector<unsigned int>(v.begin(),
+                                              v.begin() + (1u << dim)));
+              else if (dim == 2)
+                {
+                  // Two counter-clockwise triangles split by the rising
+                  // diagonal, so every Jacobian is positive.
+                  add({v[0], v[1], v[3]});
+                  add({v[0], v[3], v[2]});
+                }
+              else
+                for (const auto &tet : kuhn)
+                  add({v[tet[0]], v[tet[1]], v[tet[2]], v[tet[3]]});
+            }
+    }
   } // namespace
 
-  void
-  build_triangulation(const Layout                &layout,
-                      const double                 cell_size,
-                      const ElementType            element,
-                      dealii::Triangulation<2, 2> &triangulation)
+  template <int dim>
+  BoundaryNames
+  wall_boundary_names(const dealii::Triangulation<dim, dim> &triangulation)
   {
+    BoundaryNames names;
+    names.source     = "the built-in wall";
+    names.id_of_name = {{"left", wall_boundary::left},
+                        {"right", wall_boundary::right},
+                        {"base", wall_boundary::base},
+                        {"top", wall_boundary::top}};
+    if (dim == 3)
+      {
+        names.id_of_name["front"] = wall_boundary::front;
+        names.id_of_name["back"]  = wall_boundary::back;
+      }
+    for (const auto id : triangulation.get_boundary_ids())
+      names.ids_on_boundary.insert(id);
+    return names;
+  }
+
+  template <int dim>
+  void
+  build_triangulation(const Layout                    &layout,
+                      const double                     cell_size,
+                      const ElementType                element,
+                      const unsigned int               blocks_through_thickness,
+                      const double                     thickness,
+                      dealii::Triangulation<dim, dim> &triangulation)
+  {
+    const bool         simplex = element == ElementType::p2;
+    const unsigned int layers  = dim == 3 ? blocks_through_thickness : 1;
+    const unsigned int nz =
+      dim == 3 ? n_cells_along(thickness / layers, cell_size) : 1;
+
     // Count first, so the vertex and cell arrays are allocated once.
-    std::size_t n_vertices = 0, n_squares = 0;
+    std::size_t n_vertices = 0, n_boxes = 0;
     for (const Block &block : layout.blocks)
       {
         const unsigned int nx = n_cells_along(block.width(), cell_size);
         const unsigned int ny = n_cells_along(block.height(), cell_size);
-        n_vertices += static_cast<std::size_t>(nx + 1) * (ny + 1);
-        n_squares += static_cast<std::size_t>(nx) * ny;
+        n_vertices += static_cast<std::size_t>(nx + 1) * (ny + 1) *
+                      (dim == 3 ? nz + 1 : 1) * layers;
+        n_boxes += static_cast<std::size_t>(nx) * ny * nz * layers;
       }
-    const bool simplex = element == ElementType::p2;
-
-    std::vector<dealii::Point<2>>    vertices;
-    std::vector<dealii::CellData<2>> cells;
+    std::vector<dealii::Point<dim>>    vertices;
+    std::vector<dealii::CellData<dim>> cells;
     vertices.reserve(n_vertices);
-    cells.reserve(simplex ? 2 * n_squares : n_squares);
+    cells.reserve(simplex ? (dim == 2 ? 2 : 6) * n_boxes : n_boxes);
 
     for (std::size_t b = 0; b < layout.blocks.size(); ++b)
       {
-        const Block       &block = layout.blocks[b];
-        const unsigned int nx    = n_cells_along(block.width(), cell_size);
-        const unsigned int ny    = n_cells_along(block.height(), cell_size);
-        const auto         first = static_cast<unsigned int>(vertices.size());
-        for (unsigned int j = 0; j <= ny; ++j)
-          for (unsigned int i = 0; i <= nx; ++i)
-            vertices.emplace_back(along(block.x0, block.x1, i, nx),
-                                  along(block.y0, block.y1, j, ny));
-        auto vertex = [&](const unsigned int i, const unsigned int j) {
-          return first + j * (nx + 1) + i;
-        };
-        for (unsigned int j = 0; j < ny; ++j)
-          for (unsigned int i = 0; i < nx; ++i)
-            {
-              const unsigned int v00 = vertex(i, j), v10 = vertex(i + 1, j),
-                                 v01 = vertex(i, j + 1),
-                                 v11 = vertex(i + 1, j + 1);
-              if (!simplex)
-                {
-                  dealii::CellData<2> cell(4);
-                  // deal.II's lexicographic quadrilateral vertex order.
-                  cell.vertices    = {v00, v10, v01, v11};
-                  cell.material_id = static_cast<dealii::types::material_id>(b);
-                  cells.push_back(std::move(cell));
-                }
-              else
-                {
-                  // Two counter-clockwise triangles split by the rising
-                  // diagonal, so every Jacobian is positive.
-                  for (const auto &triangle :
-                       {std::vector<unsigned int>{v00, v10, v11},
-                        std::vector<unsigned int>{v00, v11, v01}})
-                    {
-                      dealii::CellData<2> cell(3);
-                      cell.vertices = triangle;
-                      cell.material_id =
-                        static_cast<dealii::types::material_id>(b);
-                      cells.push_back(std::move(cell));
-                    }
-                }
-            }
+        const Block &block = layout.blocks[b];
+        for (unsigned int layer = 0; layer < layers; ++layer)
+          {
+            Box box;
+            box.lo = {{block.x0, block.y0, along(0, thickness, layer, layers)}};
+            box.hi = {
+              {block.x1, block.y1, along(0, thickness, layer + 1, layers)}};
+            box.n = {{n_cells_along(block.width(), cell_size),
+                      n_cells_along(block.height(), cell_size),
+                      nz}};
+            add_cells<dim>(box,
+                           static_cast<unsigned int>(b * layers + layer),
+                           simplex,
+                           vertices,
+                           cells);
+          }
       }
-
     triangulation.clear();
     triangulation.create_triangulation(vertices, cells, dealii::SubCellData());
+
+    // The faces on the bounding box get their side's id.
+    const BoundingBox box       = layout.bounding_box();
+    const double      tolerance = 1e-8 * cell_size;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const dealii::Point<dim> c      = cell->face(f)->center();
+            const dealii::Point<dim> inside = cell->center();
+            auto on = [&](const unsigned int axis, const double value) {
+              return std::abs(c[axis] - value) <= tolerance &&
+                     std::abs(inside[axis] - value) > tolerance;
+            };
+            dealii::types::boundary_id id = 0;
+            if (on(0, box.x0))
+              id = wall_boundary::left;
+            else if (on(0, box.x1))
+              id = wall_boundary::right;
+            else if (on(1, box.y0))
+              id = wall_boundary::base;
+            else if (on(1, box.y1))
+              id = wall_boundary::top;
+            else if (dim == 3 && on(dim - 1, 0.0))
+              id = wall_boundary::front;
+            else if (dim == 3 && on(dim - 1, thickness))
+              id = wall_boundary::back;
+            cell->face(f)->set_boundary_id(id);
+          }
   }
+
+  template BoundaryNames
+  wall_boundary_names<2>(const dealii::Triangulation<2, 2> &);
+  template BoundaryNames
+  wall_boundary_names<3>(const dealii::Triangulation<3, 3> &);
+  template void
+  build_triangulation<2>(const Layout &,
+                         double,
+                         ElementType,
+                         unsigned int,
+                         double,
+                         dealii::Triangulation<2, 2> &);
+  template void
+  build_triangulation<3>(const Layout &,
+                         double,
+                         ElementType,
+                         unsigned int,
+                         double,
+                         dealii::Triangulation<3, 3> &);
 } // namespace unilateral::masonry

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace unilateral::masonry
@@ -19,10 +20,12 @@ namespace unilateral::masonry
   {
     /**
      * Stress from the displacement gradient, cell by cell with the cell's
-     * material (plane strain): the tensor sigma = lambda tr(eps) I + 2 mu eps
-     * and the von Mises stress, with sigma_zz = lambda tr(eps) included.
+     * material: the tensor sigma = lambda tr(eps) I + 2 mu eps (in 2D plane
+     * strain, whose sigma_zz = lambda tr(eps) enters the von Mises stress)
+     * and the von Mises stress.
      */
-    class StressPostprocessor : public dealii::DataPostprocessor<2>
+    template <int dim>
+    class StressPostprocessor : public dealii::DataPostprocessor<dim>
     {
     public:
       StressPostprocessor(const std::vector<MaterialClass> &classes,
@@ -33,43 +36,48 @@ namespace unilateral::masonry
 
       void
       evaluate_vector_field(
-        const dealii::DataPostprocessorInputs::Vector<2> &inputs,
+        const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
         std::vector<dealii::Vector<double>> &computed_quantities) const override
       {
-        const auto           cell = inputs.template get_cell<2>();
+        const auto           cell = inputs.template get_cell<dim>();
         const MaterialClass &material =
           classes[class_of_block[cell->material_id()]];
         const double lambda = material.lambda();
         const double mu     = material.mu();
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
-            const auto  &grad  = inputs.solution_gradients[q];
-            const double e_xx  = grad[0][0];
-            const double e_yy  = grad[1][1];
-            const double e_xy  = 0.5 * (grad[0][1] + grad[1][0]);
-            const double trace = e_xx + e_yy;
-            const double s_xx  = lambda * trace + 2 * mu * e_xx;
-            const double s_yy  = lambda * trace + 2 * mu * e_yy;
-            const double s_xy  = 2 * mu * e_xy;
-            const double s_zz  = lambda * trace;
-            const double von_mises =
-              std::sqrt(0.5 * ((s_xx - s_yy) * (s_xx - s_yy) +
-                               (s_yy - s_zz) * (s_yy - s_zz) +
-                               (s_zz - s_xx) * (s_zz - s_xx)) +
-                        3 * s_xy * s_xy);
+            const auto &grad = inputs.solution_gradients[q];
+            // Full 3x3 strain and stress (plane strain: e_zz = 0).
+            double e[3][3] = {};
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                e[i][j] = 0.5 * (grad[i][j] + grad[j][i]);
+            const double trace = e[0][0] + e[1][1] + e[2][2];
+            double       sigma[3][3];
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                sigma[i][j] = 2 * mu * e[i][j] + (i == j ? lambda * trace : 0);
+            const double von_mises = std::sqrt(
+              0.5 *
+                ((sigma[0][0] - sigma[1][1]) * (sigma[0][0] - sigma[1][1]) +
+                 (sigma[1][1] - sigma[2][2]) * (sigma[1][1] - sigma[2][2]) +
+                 (sigma[2][2] - sigma[0][0]) * (sigma[2][2] - sigma[0][0])) +
+              3 * (sigma[0][1] * sigma[0][1] + sigma[1][2] * sigma[1][2] +
+                   sigma[0][2] * sigma[0][2]));
             dealii::Vector<double> &out = computed_quantities[q];
-            out[0]                      = s_xx;
-            out[1]                      = s_xy;
-            out[2]                      = s_xy;
-            out[3]                      = s_yy;
-            out[4]                      = von_mises;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                out[i * dim + j] = sigma[i][j];
+            out[dim * dim] = von_mises;
           }
       }
 
       std::vector<std::string>
       get_names() const override
       {
-        return {"stress", "stress", "stress", "stress", "von_mises"};
+        std::vector<std::string> names(dim * dim, "stress");
+        names.push_back("von_mises");
+        return names;
       }
 
       std::vector<
@@ -77,11 +85,10 @@ namespace unilateral::masonry
       get_data_component_interpretation() const override
       {
         using namespace dealii::DataComponentInterpretation;
-        return {component_is_part_of_tensor,
-                component_is_part_of_tensor,
-                component_is_part_of_tensor,
-                component_is_part_of_tensor,
-                component_is_scalar};
+        std::vector<DataComponentInterpretation> interpretation(
+          dim * dim, component_is_part_of_tensor);
+        interpretation.push_back(component_is_scalar);
+        return interpretation;
       }
 
       dealii::UpdateFlags
@@ -101,53 +108,72 @@ namespace unilateral::masonry
    * Warp By Vector), the stress tensor and von Mises stress, and at the
    * contact nodes the contact pressure, the normal gap and the active set
    * (zero elsewhere). Cell data: block id (= deal.II material_id) and
-   * material class.
+   * material class. One dataset for all blocks.
    *
    * The nodal fields live on a scalar quadratic element with the same nodes.
-   * A node's pressure in a normal direction is the sum of its constraint
-   * forces in that direction divided by its Simpson weight on its contact
-   * faces with that normal (h/6 at a face end, 2h/3 at a midpoint), which is
-   * exact for a uniform pressure. A block corner can carry a horizontal and
-   * a vertical joint: there the output shows the larger pressure, the
-   * smaller gap, and "active" if either constraint is.
+   * A node's pressure in a direction is the sum of its constraints' forces
+   * in that direction divided by its weight on its contact faces in that
+   * direction (int phi_node over them), which is exact for a uniform
+   * pressure. A block corner can carry constraints in several directions:
+   * there the output shows the larger pressure, the smaller gap, and
+   * "active" if any constraint is.
    */
+  template <int dim>
   void
-  MasonryScene::output_results(const RunContext &context) const
+  MasonryScene<dim>::output_results(const RunContext &context) const
   {
     context.stage(registered_name, "writing VTU/PVD");
-    const Discretisation &discretisation = state->discretisation;
-    const ContactSet     &contacts       = state->contacts;
-    const auto            n_dofs         = discretisation.dof_handler.n_dofs();
+    const Discretisation<dim> &discretisation = state->discretisation;
+    const ContactSet<dim>     &contacts       = state->contacts;
+    const std::size_t          n_nodes        = contacts.node_dofs.size();
 
-    // Per physical DOF (a node and a normal direction): summed force,
-    // smallest gap, any active, from the constraints acting on it.
-    std::vector<double> force(n_dofs, 0.0);
-    std::vector<double> gap(n_dofs, std::numeric_limits<double>::max());
-    std::vector<char>   active(n_dofs, 0), constrained(n_dofs, 0);
+    // Per node and direction class: summed force, smallest gap, any active.
+    struct Load
+    {
+      double force = 0, weight = 0, gap = std::numeric_limits<double>::max();
+      bool   active = false;
+    };
+    DirectionClasses<dim>                                 classes;
+    std::map<std::pair<unsigned int, unsigned int>, Load> at;
     for (std::size_t k = 0; k < constraints.size(); ++k)
       {
-        auto add = [&](const DofIndex dof) {
-          force[dof] += constraints[k].contact_force;
-          gap[dof]         = std::min(gap[dof], constraints[k].normal_gap);
-          active[dof]      = active[dof] || constraints[k].active;
-          constrained[dof] = 1;
-        };
-        const UnilateralConstraint &c = contacts.constraints[k];
-        add(c.lower);
-        if (c.kind != ConstraintKind::signorini)
-          add(c.upper);
+        const auto        &c     = contacts.constraints[k];
+        const unsigned int klass = classes.classify(c.normal).first;
+        for (unsigned int end = 0;
+             end < (c.kind == ConstraintKind::joint ? 2u : 1u);
+             ++end)
+          {
+            Load &load = at[{end == 0 ? c.lower : c.upper, klass}];
+            load.force += constraints[k].contact_force;
+            load.weight = contacts.weight[k][end];
+            load.gap    = std::min(load.gap, constraints[k].normal_gap);
+            load.active = load.active || constraints[k].active;
+          }
+      }
+    std::vector<double> pressure(n_nodes, 0.0), gap(n_nodes, 0.0),
+      active(n_nodes, 0.0);
+    std::vector<char> any(n_nodes, 0);
+    for (const auto &[key, load] : at)
+      {
+        const unsigned int node = key.first;
+        const double       p = load.weight > 0 ? load.force / load.weight : 0.0;
+        pressure[node]       = any[node] ? std::max(pressure[node], p) : p;
+        gap[node]    = any[node] ? std::min(gap[node], load.gap) : load.gap;
+        active[node] = active[node] > 0 || load.active ? 1.0 : 0.0;
+        any[node]    = 1;
       }
 
-    dealii::DoFHandler<2> node_handler(discretisation.triangulation);
+    dealii::DoFHandler<dim> node_handler(discretisation.triangulation);
     node_handler.distribute_dofs(*discretisation.scalar_fe);
     dealii::Vector<double> contact_pressure(node_handler.n_dofs());
     dealii::Vector<double> normal_gap(node_handler.n_dofs());
     dealii::Vector<double> active_set(node_handler.n_dofs());
     {
-      const dealii::FiniteElement<2> &fe = *discretisation.fe;
-      const unsigned int n_nodes = discretisation.scalar_fe->n_dofs_per_cell();
+      const dealii::FiniteElement<dim> &fe = *discretisation.fe;
+      const unsigned int                n_nodes_per_cell =
+        discretisation.scalar_fe->n_dofs_per_cell();
       std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      std::vector<dealii::types::global_dof_index> nodes(n_nodes);
+      std::vector<dealii::types::global_dof_index> nodes(n_nodes_per_cell);
       auto node_cell = node_handler.begin_active();
       for (const auto &cell :
            discretisation.dof_handler.active_cell_iterators())
@@ -155,26 +181,13 @@ namespace unilateral::masonry
           cell->get_dof_indices(dofs);
           node_cell->get_dof_indices(nodes);
           ++node_cell;
-          for (unsigned int k = 0; k < n_nodes; ++k)
+          for (unsigned int k = 0; k < n_nodes_per_cell; ++k)
             {
-              double pressure = 0, smallest_gap = 0;
-              bool   any = false, is_active = false;
-              for (unsigned int d = 0; d < 2; ++d)
-                {
-                  const auto dof = dofs[fe.component_to_system_index(d, k)];
-                  if (!constrained[dof])
-                    continue;
-                  const double weight = contacts.contact_weight[dof];
-                  const double p      = weight > 0 ? force[dof] / weight : 0.0;
-                  pressure            = any ? std::max(pressure, p) : p;
-                  smallest_gap =
-                    any ? std::min(smallest_gap, gap[dof]) : gap[dof];
-                  is_active = is_active || active[dof];
-                  any       = true;
-                }
-              contact_pressure[nodes[k]] = pressure;
-              normal_gap[nodes[k]]       = smallest_gap;
-              active_set[nodes[k]]       = is_active ? 1.0 : 0.0;
+              const unsigned int node =
+                contacts.node_of_dof[dofs[fe.component_to_system_index(0, k)]];
+              contact_pressure[nodes[k]] = pressure[node];
+              normal_gap[nodes[k]]       = gap[node];
+              active_set[nodes[k]]       = active[node];
             }
         }
     }
@@ -182,17 +195,17 @@ namespace unilateral::masonry
     dealii::Vector<double> displacement(state->displacement.begin(),
                                         state->displacement.end());
 
-    StressPostprocessor stress(parameters.materials.classes,
-                               state->class_of_block);
-    dealii::DataOut<2>  data_out;
+    StressPostprocessor<dim> stress(parameters.materials.classes,
+                                    state->class_of_block);
+    dealii::DataOut<dim>     data_out;
     data_out.attach_triangulation(discretisation.triangulation);
     data_out.add_data_vector(
       discretisation.dof_handler,
       displacement,
-      std::vector<std::string>{"displacement", "displacement"},
+      std::vector<std::string>(dim, "displacement"),
       std::vector<
         dealii::DataComponentInterpretation::DataComponentInterpretation>(
-        2, dealii::DataComponentInterpretation::component_is_part_of_vector));
+        dim, dealii::DataComponentInterpretation::component_is_part_of_vector));
     data_out.add_data_vector(discretisation.dof_handler, displacement, stress);
     data_out.add_data_vector(node_handler,
                              contact_pressure,
@@ -209,12 +222,12 @@ namespace unilateral::masonry
 
     // deal.II 9.4 writes cell data as (piecewise constant) point data; the
     // block and material ids go in as true VTK cell data instead, one value
-    // per VTK cell (a deal.II cell is written as n_subdivisions^2 linear
-    // quadrilaterals, or one quadratic triangle).
+    // per VTK cell (a deal.II cell is written as 2^dim linear cells, or one
+    // quadratic simplex).
     std::ostringstream vtu_text;
     data_out.write_vtu(vtu_text);
     const unsigned int vtk_cells_per_cell =
-      discretisation.element == ElementType::q2 ? 4 : 1;
+      discretisation.element == ElementType::q2 ? (1u << dim) : 1;
     std::ostringstream cell_data;
     cell_data << "    <CellData Scalars=\"block_id\">\n";
     for (const std::string name : {"block_id", "material"})
@@ -253,4 +266,9 @@ namespace unilateral::masonry
     std::ofstream pvd(directory / "solution.pvd");
     dealii::DataOutBase::write_pvd_record(pvd, {{0.0, vtu_name}});
   }
+
+  template void
+  MasonryScene<2>::output_results(const RunContext &) const;
+  template void
+  MasonryScene<3>::output_results(const RunContext &) const;
 } // namespace unilateral::masonry

@@ -49,43 +49,138 @@ namespace unilateral::masonry
     }
   } // namespace
 
+  std::vector<BoundarySelection>
+  parse_selections(const std::string &text, const std::string &parameter)
+  {
+    std::vector<BoundarySelection> result;
+    for (const std::string &item :
+         dealii::Utilities::split_string_list(text, ','))
+      {
+        BoundarySelection selection;
+        const std::size_t where = item.find(" where ");
+        selection.boundary = dealii::Utilities::trim(item.substr(0, where));
+        if (where != std::string::npos)
+          selection.region = dealii::Utilities::trim(item.substr(where + 7));
+        const std::size_t slash = parameter.rfind('/');
+        check_parameter(!selection.boundary.empty() &&
+                          (where == std::string::npos ||
+                           !selection.region.empty()),
+                        parameter.substr(0, slash),
+                        parameter.substr(slash + 1),
+                        text,
+                        "each comma-separated entry is a boundary (a name of "
+                        "the mesh or its number), optionally followed by "
+                        "'where' and a region ('base where x < s')");
+        result.push_back(selection);
+      }
+    return result;
+  }
+
   // Numbers are declared with unrestricted patterns and checked in
   // parse_parameters, so a bad value gets our one-line message with the fix
   // instead of a pattern description.
   void
   GeometryParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Integer(),
+                      "2 (plane strain) or 3. The built-in walls in 3D are "
+                      "the 2D walls extruded through 'Thickness' in z, "
+                      "with 'Blocks through the thickness' blocks "
+                      "behind each other.");
     prm.declare_entry("Geometry",
                       "stack bond",
-                      Selection(bond_names()),
-                      "The wall on the unit square (Ainsworth & Mihai, "
-                      "Fig. 2): 'stack bond' (H x H blocks), 'running bond' "
-                      "(2H x H bricks, the base row starting with a full "
-                      "brick at x = 0, each next row shifted by H, half "
-                      "bricks at the ends) or 'laminae' (1 x H strips).");
+                      Selection(bond_names() + "|mesh file"),
+                      "The built-in walls on the unit square (Ainsworth & "
+                      "Mihai, Fig. 2): 'stack bond' (H x H blocks), 'running "
+                      "bond' (2H x H bricks, the base row starting with a full "
+                      "brick at x = 0, each next row shifted by H, half bricks "
+                      "at the ends) or 'laminae' (1 x H strips); their "
+                      "boundaries are named left, right, base, top (and front "
+                      "z = 0, back z = thickness in 3D). Or 'mesh file': the "
+                      "blocks of 'Mesh file'.");
+    prm.declare_entry("Mesh file",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "With 'Geometry = mesh file': a Gmsh mesh (.msh, "
+                      "formats 2.2 and 4.1 ASCII) of quadrilaterals or "
+                      "triangles (2D), hexahedra or tetrahedra (3D); a "
+                      "relative path is taken from the parameter file's "
+                      "folder. Each block is a connected set of cells of one "
+                      "geometric entity and physical tag: blocks may touch "
+                      "with coincident separate nodes or share nodes (then "
+                      "they are split). A cell's physical tag is its material "
+                      "('Materials/Assignment = physical tag'); the physical "
+                      "tags (or names) of boundary lines (2D) or surfaces "
+                      "(3D) name the boundaries the supports and loads refer "
+                      "to.");
     prm.declare_entry("Blocks per side",
                       "20",
                       Integer(),
-                      "m >= 1: the block height is H = 1/m (Table 1 of the "
-                      "paper uses m = 5, 10, ..., 225).");
+                      "m >= 1: the block height of the built-in walls is "
+                      "H = 1/m (Table 1 of the paper uses m = 5, 10, ..., "
+                      "225).");
     prm.declare_entry("Refinement",
                       "0",
                       Integer(),
-                      "r >= 0: cells of size h = H / 2^r. The paper uses r = 0 "
-                      "(h = H); r >= 1 for convergence studies.");
+                      "r >= 0: cells of size h = H / 2^r for the built-in "
+                      "walls (the paper uses r = 0, h = H; r >= 1 for "
+                      "convergence studies); a mesh file's cells are refined "
+                      "r times.");
     prm.declare_entry("Element",
                       "Q2",
                       Selection("Q2|P2"),
-                      "Q2: biquadratic quadrilaterals, FESystem(FE_Q(2), 2). "
-                      "P2: each square split into two triangles with "
-                      "quadratic elements (the paper's element). Both have "
-                      "the same nodes, hence the same n and n_c.");
+                      "Q2: FESystem(FE_Q(2), dim) on quadrilaterals or "
+                      "hexahedra. P2: FESystem(FE_SimplexP(2), dim) on "
+                      "triangles or tetrahedra (the built-in walls split each "
+                      "square into two triangles, each cube into six "
+                      "tetrahedra: the same nodes, hence the same n and n_c; "
+                      "the paper's element). A mesh file's cells decide: P2 "
+                      "for a simplex mesh.");
+    prm.declare_entry("Blocks through the thickness",
+                      "1",
+                      Integer(),
+                      "3D built-in walls: each block of the 2D wall becomes "
+                      "this many blocks behind each other in z (collar "
+                      "joints between them).");
+    prm.declare_entry("Thickness",
+                      "1",
+                      Double(),
+                      "3D built-in walls: the thickness in z, in units of H "
+                      "(> 0); each block gets round(depth / h) cells in z.");
+    prm.declare_entry("Coincidence tolerance",
+                      "1e-8",
+                      Double(),
+                      "Points (nodes, faces) closer than this times the "
+                      "smallest cell size coincide; in (0, 1e-3]. Faces of "
+                      "two blocks that are parallel, opposite and overlapping "
+                      "but further apart than this and closer than 1e-2 "
+                      "times the cell size (a gap or an overlap of the "
+                      "blocks) are an error.");
   }
 
   void
   GeometryParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
-    bond = parse_bond(prm.get("Geometry"));
+    const long dim = prm.get_integer("Dimension");
+    check_parameter(dim == 2 || dim == 3,
+                    geometry_section,
+                    "Dimension",
+                    dim,
+                    "must be 2 (plane strain) or 3");
+    dimension = static_cast<unsigned int>(dim);
+
+    const std::string geometry = prm.get("Geometry");
+    from_mesh_file             = geometry == "mesh file";
+    if (!from_mesh_file)
+      bond = parse_bond(geometry);
+    mesh_file = prm.get("Mesh file");
+    check_parameter(!from_mesh_file || !mesh_file.empty(),
+                    geometry_section,
+                    "Mesh file",
+                    "''",
+                    "'Geometry = mesh file' needs a mesh file (.msh)");
 
     const long blocks = prm.get_integer("Blocks per side");
     check_parameter(blocks >= 1 && blocks <= 100000,
@@ -105,41 +200,128 @@ namespace unilateral::masonry
     refinement = static_cast<unsigned int>(levels);
 
     element = prm.get("Element") == "P2" ? ElementType::p2 : ElementType::q2;
+
+    const long through = prm.get_integer("Blocks through the thickness");
+    check_parameter(through >= 1 && through <= 1000,
+                    geometry_section,
+                    "Blocks through the thickness",
+                    through,
+                    "must be an integer in [1, 1000]");
+    blocks_through_thickness = static_cast<unsigned int>(through);
+    thickness                = prm.get_double("Thickness");
+    check_parameter(thickness > 0 && std::isfinite(thickness),
+                    geometry_section,
+                    "Thickness",
+                    thickness,
+                    "must be > 0 (in units of the block height H)");
+    coincidence_tolerance = prm.get_double("Coincidence tolerance");
+    check_parameter(coincidence_tolerance > 0 && coincidence_tolerance <= 1e-3,
+                    geometry_section,
+                    "Coincidence tolerance",
+                    coincidence_tolerance,
+                    "must be in (0, 1e-3] (relative to the smallest cell "
+                    "size)");
   }
 
   void
   BoundaryParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
+    const std::string where =
+      " A comma-separated list of boundaries (names of the mesh, or their "
+      "numbers), each optionally restricted to a region: 'base where x < "
+      "s' (an expression of x, y, z and the constants g, H, s, without "
+      "commas). A condition holds at a node of its faces if the node lies "
+      "in the face's part inside the region or on its edge. Where faces "
+      "with different conditions meet, a node takes the stronger one, "
+      "direction by direction: Fixed and Prescribed displacement over "
+      "Normal displacement zero over Signorini over traction.";
     prm.enter_subsection("Boundary conditions");
     prm.declare_entry(
       "Relative gap",
       "0.5",
       Double(),
-      "g / H >= 0: the settlement gap g between the base and the rigid ground "
-      "on the Signorini part Gamma_S, in units of the block height H. The "
-      "paper takes 0 < g < H without stating g; the default g = H/2 is the "
-      "middle of that range at every m, a settlement far larger than the "
-      "elastic deformation (about 1e-4), so the settling blocks move as "
-      "bodies and open joints. g = 0 closes every joint (the patch test).");
+      "g / H >= 0: the constant g of the expressions, the settlement gap "
+      "between the built-in walls' base and the rigid ground on their "
+      "Signorini part, in units of the block height H (H = 1 for a mesh "
+      "file). The paper takes 0 < g < H without stating g; the default "
+      "g = H/2 is the middle of that range at every m, a settlement far "
+      "larger than the elastic deformation (about 1e-4), so the settling "
+      "blocks move as bodies and open joints. g = 0 closes every joint (the "
+      "patch test).");
     prm.declare_entry(
       "Signorini part of the base",
       "0.5",
       Double(),
-      "s in [0, 1]: Gamma_S is the left part [0, s] of the base (u_y >= -g), "
-      "the rest of the base has u_y = 0 (Gamma_D). A base node exactly at "
-      "x = s is Signorini only if its block ends there. The paper: s = 0.5.");
-    prm.declare_entry("Top traction",
-                      "0, 0",
-                      List(Double(), 2, 2, ","),
-                      "Traction (force per length, x and y) on the top "
-                      "y = 1; '0, 0' is the paper's traction-free top. "
-                      "A downward load is e.g. '0, -1'.");
+      "f in [0, 1]: the constant s = x_min + f (x_max - x_min) of the "
+      "expressions, where the built-in walls' settled stretch of the base "
+      "ends (the paper: the left half settles, f = 0.5). A base node "
+      "exactly at x = s is held unless its block ends there.");
+    prm.declare_entry("Fixed",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Boundaries where u = 0." + where);
+    prm.declare_entry(
+      "Normal displacement zero",
+      "left, right, base where x > s",
+      dealii::Patterns::Anything(),
+      "Boundaries where u.n = 0 (a roller, frictionless and bilateral; "
+      "on inclined faces too). The default: the built-in walls' sides and "
+      "the part of the base right of s (the paper's Gamma_D)." +
+        where);
+    prm.declare_entry("Signorini",
+                      "base where x < s",
+                      dealii::Patterns::Anything(),
+                      "Boundaries resting on a rigid frictionless support "
+                      "along the face normal, 'Signorini gap' away: u.n <= "
+                      "gap (n outward). The default: the built-in walls' "
+                      "settled stretch of the base (Gamma_S)." +
+                        where);
+    prm.declare_entry("Signorini gap",
+                      "g",
+                      dealii::Patterns::Anything(),
+                      "The gap between a Signorini boundary and its support, "
+                      "along the normal: a function of x, y, z (a settlement "
+                      "profile) with the constants g, H, s and pi; the "
+                      "support may not lie inside the block (gap >= 0).");
+    prm.declare_entry("Prescribed displacement boundaries",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Boundaries where u = 'Prescribed displacement' (a "
+                      "support that moved: a spreading springing)." +
+                        where);
+    prm.declare_entry("Prescribed displacement",
+                      "0; 0",
+                      dealii::Patterns::Anything(),
+                      "u on the 'Prescribed displacement boundaries': dim "
+                      "components separated by ';', functions of x, y, z with "
+                      "the constants g, H, s, pi ('0.01; 0').");
+    prm.declare_entry("Traction boundaries",
+                      "top",
+                      dealii::Patterns::Anything(),
+                      "Boundaries loaded by 'Traction'. Boundaries not named "
+                      "anywhere are traction free." +
+                        where);
+    prm.declare_entry("Traction",
+                      "0; 0",
+                      dealii::Patterns::Anything(),
+                      "Force per length (2D) or area (3D) on the 'Traction "
+                      "boundaries': dim components separated by ';', "
+                      "functions of x, y, z with the constants g, H, s, pi. "
+                      "'0; 0' is the paper's traction-free top; '0; -1' a "
+                      "downward load.");
     prm.declare_entry("Gravity",
                       "1",
                       Double(),
-                      "Gravitational acceleration: the body force is (0, "
-                      "-density * gravity). With density 1 this gives the "
-                      "paper's f = (0, -1).");
+                      "Gravitational acceleration: the body force is density "
+                      "* gravity * the unit 'Gravity direction'. With density "
+                      "1 this gives the paper's f = (0, -1).");
+    prm.declare_entry("Gravity direction",
+                      "0, -1, 0",
+                      List(Double(), 2, 3, ","),
+                      "The direction of gravity, x, y[, z] (made unit; z must "
+                      "be 0 in 2D): '0, -1, 0' is down; tilt it for a "
+                      "structure on an inclined plane, or add a horizontal "
+                      "part for an equivalent seismic load.");
     prm.leave_subsection();
   }
 
@@ -161,15 +343,46 @@ namespace unilateral::masonry
                     signorini_fraction,
                     "must be in [0, 1] (a fraction of the base width; the "
                     "paper uses 0.5)");
-    const std::vector<double> traction =
-      get_doubles(prm, boundary_section, "Top traction");
-    top_traction = {{traction.at(0), traction.at(1)}};
-    gravity      = prm.get_double("Gravity");
+    fixed = parse_selections(prm.get("Fixed"), boundary_section + "/Fixed");
+    normal_displacement_zero =
+      parse_selections(prm.get("Normal displacement zero"),
+                       boundary_section + "/Normal displacement zero");
+    signorini =
+      parse_selections(prm.get("Signorini"), boundary_section + "/Signorini");
+    gap = prm.get("Signorini gap");
+    check_parameter(!dealii::Utilities::trim(gap).empty(),
+                    boundary_section,
+                    "Signorini gap",
+                    "''",
+                    "give the gap as an expression ('g', '0.01 * x')");
+    prescribed = parse_selections(prm.get("Prescribed displacement boundaries"),
+                                  boundary_section +
+                                    "/Prescribed displacement boundaries");
+    prescribed_displacement = prm.get("Prescribed displacement");
+    traction                = parse_selections(prm.get("Traction boundaries"),
+                                boundary_section + "/Traction boundaries");
+    traction_value          = prm.get("Traction");
+    gravity                 = prm.get_double("Gravity");
     check_parameter(std::isfinite(gravity),
                     boundary_section,
                     "Gravity",
                     gravity,
                     "must be a finite number");
+    const std::vector<double> direction =
+      get_doubles(prm, boundary_section, "Gravity direction");
+    gravity_direction   = {{direction.at(0),
+                            direction.at(1),
+                          direction.size() > 2 ? direction[2] : 0.0}};
+    const double length = std::hypot(gravity_direction[0],
+                                     gravity_direction[1],
+                                     gravity_direction[2]);
+    check_parameter(length > 0 && std::isfinite(length),
+                    boundary_section,
+                    "Gravity direction",
+                    prm.get("Gravity direction"),
+                    "must be a nonzero vector x, y[, z]");
+    for (double &component : gravity_direction)
+      component /= length;
     prm.leave_subsection();
   }
 
@@ -192,15 +405,26 @@ namespace unilateral::masonry
                       List(Double(), 1, 64, ","),
                       "Density >= 0 of each material class; the body force "
                       "is (0, -density * gravity).");
+    prm.declare_entry("Tags",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "With 'Assignment = physical tag': the physical tag "
+                      "(name or number) of the mesh file's cells of each "
+                      "class, comma separated, one per class in the order of "
+                      "'Young's modulus'. Empty: tags 1, 2, ... A cell whose "
+                      "tag is not listed is an error.");
     prm.declare_entry("Assignment",
                       "single",
-                      Selection("single|alternating courses|cyclic"),
+                      Selection(
+                        "single|alternating courses|cyclic|physical tag"),
                       "Which class each block gets: 'single' (one class for "
                       "all), 'alternating courses' (course k gets class k mod "
                       "the number of classes, e.g. bricks and bond beams), "
                       "'cyclic' (block b gets class b mod the number of "
-                      "classes). Blocks are numbered row by row from the "
-                      "bottom left.");
+                      "classes), both for the built-in walls, whose blocks are "
+                      "numbered row by row from the bottom left; 'physical "
+                      "tag' (a mesh file: each cell's physical tag, see "
+                      "'Tags').");
     prm.leave_subsection();
   }
 
@@ -215,6 +439,11 @@ namespace unilateral::masonry
     const std::vector<double> rho =
       get_doubles(prm, materials_section, "Density");
     const std::string rule = prm.get("Assignment");
+    tags.clear();
+    const std::string tag_text = prm.get("Tags");
+    for (const std::string &tag :
+         dealii::Utilities::split_string_list(tag_text, ','))
+      tags.push_back(tag);
     prm.leave_subsection();
 
     for (const auto &[name, values] :
@@ -260,8 +489,21 @@ namespace unilateral::masonry
       assignment = MaterialAssignment::single;
     else if (rule == "alternating courses")
       assignment = MaterialAssignment::alternating_courses;
-    else
+    else if (rule == "cyclic")
       assignment = MaterialAssignment::cyclic;
+    else
+      assignment = MaterialAssignment::physical_tag;
+    if (tags.empty())
+      for (std::size_t k = 0; k < classes.size(); ++k)
+        tags.push_back(std::to_string(k + 1));
+    check_parameter(assignment != MaterialAssignment::physical_tag ||
+                      tags.size() == classes.size(),
+                    materials_section,
+                    "Tags",
+                    tag_text,
+                    "has " + std::to_string(tags.size()) + " entries for " +
+                      std::to_string(classes.size()) +
+                      " material classes; give one tag per class");
     check_parameter(assignment != MaterialAssignment::single ||
                       classes.size() == 1,
                     materials_section,
@@ -308,5 +550,29 @@ namespace unilateral::masonry
     boundary.parse_parameters(prm);
     materials.parse_parameters(prm);
     prm.leave_subsection();
+    const bool by_layout =
+      materials.assignment == MaterialAssignment::alternating_courses ||
+      materials.assignment == MaterialAssignment::cyclic;
+    check_parameter(!(geometry.from_mesh_file && by_layout),
+                    materials_section,
+                    "Assignment",
+                    by_layout ? "alternating courses or cyclic" : "",
+                    "numbers the built-in walls' blocks; a mesh file's "
+                    "blocks take their class from their physical tag "
+                    "('physical tag')");
+    check_parameter(geometry.from_mesh_file ||
+                      materials.assignment != MaterialAssignment::physical_tag,
+                    materials_section,
+                    "Assignment",
+                    "physical tag",
+                    "needs 'Geometry = mesh file' (the built-in walls have "
+                    "no physical tags): choose 'single', 'alternating "
+                    "courses' or 'cyclic'");
+    check_parameter(geometry.dimension == 3 ||
+                      boundary.gravity_direction[2] == 0,
+                    boundary_section,
+                    "Gravity direction",
+                    boundary.gravity_direction[2],
+                    "has a z component in 2D; give x, y");
   }
 } // namespace unilateral::masonry

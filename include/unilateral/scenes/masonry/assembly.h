@@ -5,36 +5,85 @@
 #include <unilateral/scenes/masonry/contact_detection.h>
 #include <unilateral/scenes/masonry/discretisation.h>
 #include <unilateral/scenes/masonry/parameters.h>
+#include <unilateral/scenes/masonry/supports.h>
+
+#include <deal.II/fe/fe_values.h>
 
 #include <vector>
 
 namespace unilateral::masonry
 {
   /// What the weak form needs besides the mesh: materials and loads.
+  template <int dim>
   struct LoadData
   {
     std::vector<MaterialClass> classes;
     std::vector<unsigned int>  class_of_block;
-    double                     gravity = 1;
-    std::array<double, 2>      top_traction{{0, 0}};
-    /// The top y = y_top carries the traction; faces within tolerance.
-    double y_top     = 1;
-    double tolerance = 0;
+    /// The gravity, the traction and the boundaries it acts on.
+    const Supports<dim> *supports = nullptr;
+  };
+
+  /**
+   * The stiffness (step-8; plane strain in 2D) and the load (body force,
+   * traction) of one cell in its physical DOFs, deal.II's local numbering:
+   * what the LCP's assembly expands into the new variables, and what the
+   * reactions and the tearing into blocks sum.
+   */
+  template <int dim>
+  class CellSystem
+  {
+  public:
+    CellSystem(const Discretisation<dim> &discretisation,
+               const LoadData<dim>       &loads);
+
+    /// matrix and rhs of @p cell.
+    void
+    reinit(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
+
+  private:
+    const LoadData<dim>      &loads;
+    dealii::FEValues<dim>     fe_values;
+    dealii::FEFaceValues<dim> fe_face_values;
+    const unsigned int        dofs_per_cell;
+    std::vector<unsigned int> component;
+    /// The traction supports, by boundary id.
+    std::vector<std::vector<const Support<dim> *>> traction_on;
+
+  public:
+    /// Row-major, dofs_per_cell^2.
+    std::vector<double> matrix;
+    std::vector<double> rhs;
   };
 
   /**
    * Assemble the LCP in the new variables: A = C~^-T K C~^-1 and
-   * b = C~^-T f (plane strain elasticity K, body force and top traction f),
-   * S = the constrained variables with bounds 0 (joints) and -g (Signorini).
+   * b = C~^-T (f - K c) (elasticity K, body force and traction f, c the
+   * prescribed displacements), S = the constrained variables with their
+   * bounds (0 for joints, -gap for Signorini).
    * Each cell's local physical DOFs are expanded into their few new
    * variables, like AffineConstraints::distribute_local_to_global but with
    * the expansion lists of @p change, so A stays sparse and no global
    * product is formed; the sparsity pattern comes from the same expansion.
-   * Dirichlet DOFs have empty expansions and drop out.
+   * DOFs without variables (held, rollers) have no terms and drop out.
+   * @p energy_offset is set to 1/2 c^T K c - f^T c, the physical energy
+   * minus the LCP's.
    */
+  template <int dim>
   lcp::Problem
-  assemble_lcp(const Discretisation    &discretisation,
-               const ChangeOfVariables &change,
-               const ContactSet        &contacts,
-               const LoadData          &loads);
+  assemble_lcp(const Discretisation<dim>    &discretisation,
+               const ChangeOfVariables<dim> &change,
+               const ContactSet<dim>        &contacts,
+               const LoadData<dim>          &loads,
+               double                       &energy_offset);
+
+  /**
+   * The residual R = K u - f of the physical displacement @p u at every
+   * DOF: the force each support (and each joint) exerts on a node, up to
+   * its sign.
+   */
+  template <int dim>
+  std::vector<double>
+  residual_forces(const Discretisation<dim> &discretisation,
+                  const LoadData<dim>       &loads,
+                  const std::vector<double> &u);
 } // namespace unilateral::masonry

@@ -1,31 +1,51 @@
 #pragma once
 
+#include <array>
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 /**
  * The change of variables of Ainsworth & Mihai, Section 3: from physical
- * displacement DOFs u to new variables u~ = C~ u, in which every unilateral
- * constraint is a simple bound, so the LCP has the form of lcp/problem.h.
+ * displacement DOFs u to new variables u~ = C~ u (+ a constant where
+ * displacements are prescribed), in which every unilateral constraint is a
+ * simple bound, so the LCP has the form of lcp/problem.h.
  *
- * The matrix C~ is the identity with the rows of "owner" DOFs replaced by the
- * constraint rows of C. We never form C~ or its inverse as matrices. Instead:
- *  - DOFs are vertices of a graph, constraints are edges; Dirichlet DOFs and
- *    Signorini constraints are edges to one extra "ground" vertex.
- *  - C~ is invertible iff every connected component is a tree with at most
- *    one ground connection (union-find detects the cycles; for rectangular
- *    blocks there are none).
- *  - Each tree is oriented from its root (the ground if it touches it, else
- *    its smallest DOF); the owner of an edge is its child endpoint, so owners
- *    are distinct and each DOF carries exactly one new variable: the gap of
- *    its parent edge, its Signorini displacement, zero (Dirichlet, then
- *    eliminated), or itself (roots and unconstrained DOFs).
- *  - C~^-1 is then explicit and sparse: u_v is u_root plus the signed gaps on
- *    the path from the root, a list of a few (variable, +-1) terms per DOF.
+ * The paper writes it for joints along the axes, where a constraint row of C
+ * involves one displacement component of two nodes. For joints and supports
+ * of any orientation we write each node's displacement in a frame of its
+ * own, and then do exactly what the paper does in each direction:
+ *  - the normals of all constraints and rollers are grouped into direction
+ *    classes d_k (equal up to sign, to 1e-9); constraint i has normal
+ *    n_i = s_i d_k;
+ *  - a node a that is not held gets a frame T_a: first the classes of the
+ *    constraints and rollers at a (at most dim, linearly independent), then
+ *    an orthonormal completion; its frame variables are v_a = T_a u_a, so
+ *    u_a = T_a^-1 v_a, and v_{a,k} = d_k . u_a is the node's displacement
+ *    along class k;
+ *  - per class, nodes are vertices of a graph and constraints edges, with
+ *    one extra "ground" vertex for held nodes, rollers (v_{a,k} = 0) and
+ *    Signorini constraints. C~ is invertible iff each class's graph is a
+ *    forest in which ground is one vertex (a cycle, or a chain on two
+ *    supports, is a dependent row); union-find checks it;
+ *  - each tree is oriented from its root (ground if it touches it, else its
+ *    smallest node); the child of each edge owns it, and the gap of the edge
+ *    replaces the child's frame variable of that class:
+ *    v_child = +-s w + v_parent (a joint's gap w = n . (u_upper - u_lower)),
+ *    v_child = s w (Signorini: w = n . u >= bound);
+ *  - C~^-1 is explicit and sparse: u at a DOF is a short list of (variable,
+ *    coefficient) terms plus a constant (a prescribed displacement at the
+ *    root of a chain).
+ * For axis-parallel normals every frame is the identity up to the order of
+ * its rows and this is the paper's change of variables, term for term. One
+ * variable per DOF that is neither held nor on a roller, numbered in DOF
+ * order (each frame row is assigned to one of the node's components).
+ *
  * The assembly expands every local physical DOF into these terms, which gives
- * A~ = C~^-T A C~^-1 and b~ = C~^-T b cell by cell, with no global product.
+ * A~ = C~^-T A C~^-1 and b~ = C~^-T (b - A c) cell by cell, with no global
+ * product.
  *
  * Why not deal.II's AffineConstraints, which expands DOFs cell by cell in
  * the same way: a constraint there removes a DOF, writing it in terms of
@@ -38,34 +58,78 @@ namespace unilateral::masonry
   /// Same as dealii::types::global_dof_index (checked where both are seen).
   using DofIndex = unsigned int;
 
+  template <int dim>
+  using Direction = std::array<double, dim>;
+
   enum class ConstraintKind : unsigned char
   {
-    signorini,        ///< u_y >= -g at a base node (rigid obstacle)
-    horizontal_joint, ///< u_y(upper) - u_y(lower) >= 0 at a node pair
-    vertical_joint    ///< u_x(right) - u_x(left) >= 0 at a node pair
+    signorini, ///< n . u >= bound at a node (a rigid support)
+    joint      ///< n . (u_upper - u_lower) >= 0 at a pair of coincident nodes
   };
 
   std::string
   to_string(ConstraintKind kind);
 
   /**
-   * One row of C. Joints: the normal gap u[upper] - u[lower] >= 0, where
-   * "upper" is the DOF of the block above (horizontal joint) or to the right
-   * (vertical joint), so C u >= 0 means no penetration. Signorini: u[lower]
-   * >= bound = -g (upper unused).
+   * One row of C. Joints: the normal gap n . (u[upper] - u[lower]) >= 0,
+   * where n is the outward unit normal of the lower node's block (it points
+   * into the upper node's block), so C u >= 0 means no penetration.
+   * Signorini: n . u[lower] >= bound (= -gap), n the unit normal pointing
+   * from the support into the block; upper unused. lower and upper are
+   * node indices.
    */
+  template <int dim>
   struct UnilateralConstraint
   {
     ConstraintKind kind  = ConstraintKind::signorini;
-    DofIndex       lower = 0;
-    DofIndex       upper = 0;
+    unsigned int   lower = 0;
+    unsigned int   upper = 0;
+    Direction<dim> normal{};
     double         bound = 0;
   };
 
+  /**
+   * Direction classes: normals equal up to sign (to 1e-9) share one
+   * canonical direction d (its first component above 1e-8 in magnitude is
+   * positive), so that n = s d with s = +-1.
+   */
+  template <int dim>
+  class DirectionClasses
+  {
+  public:
+    /// The class of the unit vector @p normal (a new one if none is
+    /// within 1e-9) and the sign s with normal = s d.
+    std::pair<unsigned int, double>
+    classify(const Direction<dim> &normal);
+
+    /// d of each class.
+    std::vector<Direction<dim>> directions;
+
+  private:
+    std::map<std::array<long, dim>, unsigned int> index;
+  };
+
+  /// n . u = 0 at a node (normal displacement zero).
+  template <int dim>
+  struct Roller
+  {
+    unsigned int   node = 0;
+    Direction<dim> normal{};
+  };
+
+  /// u = value at a node (fixed, or a prescribed displacement).
+  template <int dim>
+  struct HeldNode
+  {
+    unsigned int            node = 0;
+    std::array<double, dim> value{};
+  };
+
+  template <int dim>
   class ChangeOfVariables
   {
   public:
-    /// u_dof = sum over the terms of coefficient * u~[variable].
+    /// u_dof = constant + sum over the terms of coefficient * u~[variable].
     struct Term
     {
       int    variable;
@@ -73,18 +137,22 @@ namespace unilateral::masonry
     };
 
     /**
-     * Build the change of variables for @p n_dofs physical DOFs, of which
-     * those with @p dirichlet[i] != 0 are fixed to zero and eliminated (they
-     * are not LCP unknowns), subject to @p constraints (no duplicates).
-     * @p describe names a DOF for error messages (e.g. its position). Throws
-     * InputError if the constraints make C~ singular (a cycle).
+     * Build the change of variables for @p n_dofs physical DOFs grouped into
+     * @p nodes (the DOF of each component), of which the @p held ones are
+     * prescribed (and drop out of the LCP, like DOFs whose frame row is a
+     * roller), subject to @p constraints. @p describe names a node for error
+     * messages (its position and block). Throws InputError if the
+     * constraints make C~ singular (a cycle, a chain on two supports, more
+     * than dim or dependent directions at a node).
      */
-    ChangeOfVariables(DofIndex                                    n_dofs,
-                      const std::vector<char>                    &dirichlet,
-                      const std::vector<UnilateralConstraint>    &constraints,
-                      const std::function<std::string(DofIndex)> &describe);
+    ChangeOfVariables(DofIndex                                      n_dofs,
+                      const std::vector<std::array<DofIndex, dim>> &nodes,
+                      const std::vector<HeldNode<dim>>             &held,
+                      const std::vector<Roller<dim>>               &rollers,
+                      const std::vector<UnilateralConstraint<dim>> &constraints,
+                      const std::function<std::string(unsigned int)> &describe);
 
-    /// n: the LCP unknowns (physical DOFs minus Dirichlet DOFs).
+    /// n: the LCP unknowns (DOFs neither held nor on a roller).
     unsigned int
     n_unknowns() const
     {
@@ -105,14 +173,15 @@ namespace unilateral::masonry
       return constraint_variable[k];
     }
 
-    /// The new variable of physical DOF @p dof, or -1 for Dirichlet DOFs.
+    /// The new variable of physical DOF @p dof, or -1 if it has none (held,
+    /// or its frame row is on a roller).
     int
     variable_of_dof(const DofIndex dof) const
     {
       return variable[dof];
     }
 
-    /// The terms of u_dof in the new variables (empty for Dirichlet DOFs).
+    /// The terms of u_dof in the new variables.
     std::pair<const Term *, const Term *>
     expansion(const DofIndex dof) const
     {
@@ -120,11 +189,26 @@ namespace unilateral::masonry
               terms.data() + term_start[dof + 1]};
     }
 
-    /// The longest expansion (1 + depth of the deepest constraint tree).
+    /// The constant part of u_dof (prescribed displacements).
+    double
+    offset(const DofIndex dof) const
+    {
+      return offsets[dof];
+    }
+
+    /// Whether any DOF has a constant part.
+    bool
+    has_offsets() const
+    {
+      return any_offset;
+    }
+
+    /// The longest expansion (1 + depth of the deepest constraint tree, for
+    /// axis-parallel normals).
     unsigned int
     max_expansion_length() const;
 
-    /// u = C~^-1 u~ for all physical DOFs (zero on Dirichlet DOFs).
+    /// u = C~^-1 u~ (+ the constants) for all physical DOFs.
     std::vector<double>
     to_physical(const double *new_variables) const;
 
@@ -134,5 +218,7 @@ namespace unilateral::masonry
     std::vector<int>         constraint_variable;
     std::vector<std::size_t> term_start;
     std::vector<Term>        terms;
+    std::vector<double>      offsets;
+    bool                     any_offset = false;
   };
 } // namespace unilateral::masonry

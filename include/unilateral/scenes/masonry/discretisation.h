@@ -17,19 +17,20 @@ namespace unilateral::masonry
    * quadratures and DOFs. Only the masonry sources include this header (it
    * pulls in heavy deal.II headers).
    */
+  template <int dim>
   struct Discretisation
   {
     explicit Discretisation(ElementType element);
 
-    /// Vertical and horizontal displacement: two quadratic Lagrange fields.
-    ElementType                               element;
-    dealii::Triangulation<2>                  triangulation;
-    std::unique_ptr<dealii::FiniteElement<2>> fe;
+    /// The displacement: dim quadratic Lagrange fields.
+    ElementType                                 element;
+    dealii::Triangulation<dim>                  triangulation;
+    std::unique_ptr<dealii::FiniteElement<dim>> fe;
     /// The scalar quadratic element with the same nodes, for nodal output.
-    std::unique_ptr<dealii::FiniteElement<2>> scalar_fe;
-    std::unique_ptr<dealii::Mapping<2>>       mapping;
-    std::unique_ptr<dealii::Quadrature<2>>    quadrature;
-    std::unique_ptr<dealii::Quadrature<1>>    face_quadrature;
-    dealii::DoFHandler<2>                     dof_handler;
+    std::unique_ptr<dealii::FiniteElement<dim>>  scalar_fe;
+    std::unique_ptr<dealii::Mapping<dim>>        mapping;
+    std::unique_ptr<dealii::Quadrature<dim>>     quadrature;
+    std::unique_ptr<dealii::Quadrature<dim - 1>> face_quadrature;
+    dealii::DoFHandler<dim>                      dof_handler;
   };
 } // namespace unilateral::masonry

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace unilateral::masonry
@@ -16,52 +17,81 @@ namespace unilateral::masonry
   {
     unsigned int n_blocks             = 0; ///< n_b
     unsigned int n_cells              = 0;
-    unsigned int n_dofs               = 0; ///< before Dirichlet conditions
-    unsigned int n_dirichlet          = 0; ///< eliminated DOFs
+    unsigned int n_dofs               = 0; ///< before the supports
+    unsigned int n_dirichlet          = 0; ///< eliminated DOFs (held, rollers)
     unsigned int n_unknowns           = 0; ///< n = n_dofs - n_dirichlet
     unsigned int n_constraints        = 0; ///< n_c
     unsigned int n_signorini          = 0;
-    unsigned int n_horizontal_joint   = 0; ///< node pairs on horizontal joints
-    unsigned int n_vertical_joint     = 0; ///< node pairs on vertical joints
+    unsigned int n_horizontal_joint   = 0; ///< node pairs, normal along y
+    unsigned int n_vertical_joint     = 0; ///< node pairs, normal along x, z
+    unsigned int n_inclined_joint     = 0; ///< node pairs, other normals
     unsigned int max_expansion_length = 0;
-    double       block_height         = 0; ///< H
-    double       cell_size            = 0; ///< h = H / 2^r
+    double       block_height         = 0; ///< H (1 for a mesh file)
+    double       cell_size            = 0; ///< h = H / 2^r (the smallest)
     double       gap                  = 0; ///< g
   };
 
   /// One unilateral constraint after the solve.
+  template <int dim>
   struct ConstraintResult
   {
     ConstraintKind              kind;
-    std::array<double, 2>       position;
-    std::array<unsigned int, 2> blocks;        ///< lower/left, upper/right
+    std::array<double, dim>     position;
+    std::array<unsigned int, 2> blocks; ///< lower, upper (or the block twice)
+    std::array<double, dim>     normal; ///< from lower into upper, or up
     double                      normal_gap;    ///< >= 0; 0 = closed
     double                      contact_force; ///< nodal, >= 0 in compression
     bool                        active;        ///< in the active set
   };
 
   /// The displacement at one node (support point) of one block.
+  template <int dim>
   struct NodalDisplacement
   {
-    std::array<double, 2> position;
-    unsigned int          block;
-    std::array<double, 2> displacement;
+    std::array<double, dim> position;
+    unsigned int            block;
+    std::array<double, dim> displacement;
   };
 
   /**
-   * The masonry scene of Ainsworth & Mihai (2006), Section 5: a wall of
-   * elastic blocks on the unit square (stack bond, running bond or laminae),
-   * u_x = 0 on the sides, Signorini contact with a settled ground (gap g) on
-   * the left half of the base and u_y = 0 on the right half, frictionless
-   * node-to-node contact on every joint, self-weight and an optional top
-   * traction. The contact conditions become simple bounds through the
-   * change of variables to normal gaps (Section 3), and the LCP goes to the
-   * shared solver layer.
+   * What holds the structure: the force (and moment about the origin) each
+   * support exerts, the applied loads, and how well they balance.
+   */
+  template <int dim>
+  struct Statics
+  {
+    /// The applied loads (body force and tractions): total force and
+    /// moment (z in 2D).
+    std::array<double, dim> load{};
+    std::array<double, 3>   load_moment{};
+    /// Per support name: force and moment.
+    std::vector<std::string>             support;
+    std::vector<std::array<double, dim>> reaction;
+    std::vector<std::array<double, 3>>   reaction_moment;
+    /// |loads + reactions| / |loads| (force), the same for the moment over
+    /// |loads| times the structure's size.
+    double force_imbalance  = 0;
+    double moment_imbalance = 0;
+  };
+
+  /**
+   * The masonry scene of Ainsworth & Mihai (2006), for any assembly of
+   * elastic blocks in 2D (plane strain) and 3D: the paper's walls (stack
+   * bond, running bond, laminae, with its supports: normal displacement
+   * zero on the sides and the held part of the base, Signorini contact
+   * with a settled ground on the rest) built in, or blocks from a Gmsh file
+   * with supports and loads on its named boundaries; frictionless
+   * node-to-node contact on every joint of any orientation, body force and
+   * tractions. The contact conditions become simple bounds through the
+   * change of variables to normal gaps (Section 3, in frames of the joints'
+   * directions: change_of_variables.h), and the LCP goes to the shared
+   * solver layer.
    *
    * The stages of Scene::run(), as in the deal.II tutorials: make_grid,
-   * setup_system (DOFs, contact detection, change of variables),
+   * setup_system (DOFs, supports, contact detection, change of variables),
    * assemble_system, postprocess, output_results.
    */
+  template <int dim>
   class MasonryScene : public Scene
   {
   public:
@@ -70,8 +100,8 @@ namespace unilateral::masonry
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    explicit MasonryScene(dealii::ParameterHandler &prm);
-
+    /// The scene of the parameters (a relative 'Mesh file' starts at the
+    /// run's parameter file, RunContext::parameter_file).
     explicit MasonryScene(const Parameters &parameters);
 
     /**
@@ -86,12 +116,14 @@ namespace unilateral::masonry
     std::string
     size_parameters() const override;
 
-    /// In the wall's terms: no equilibrium, or a block that nothing holds.
+    /// In the structure's terms: no equilibrium, or a block that nothing
+    /// holds.
     std::string
     failure_description(const lcp::Report &report) const override;
 
-    /// m 2^r >= 100: smaller walls gain less from huge pages than the
-    /// restart costs (measured: README.md, "How the solve works").
+    /// m 2^r >= 100, or a mesh file of 20 MB: smaller problems gain less
+    /// from huge pages than the restart costs (measured: README.md, "How
+    /// the solve works").
     bool
     large(const std::string &parameter_file) const override;
 
@@ -103,23 +135,30 @@ namespace unilateral::masonry
     }
 
     /// After set_up(): supports and joints as found on the mesh.
-    const ContactSet &
+    const ContactSet<dim> &
     contact_set() const;
 
     /// After set_up(): the change of variables to normal gaps.
-    const ChangeOfVariables &
+    const ChangeOfVariables<dim> &
     change_of_variables() const;
 
     /// After run(): every constraint with its gap, force and state.
-    const std::vector<ConstraintResult> &
+    const std::vector<ConstraintResult<dim>> &
     constraint_results() const
     {
       return constraints;
     }
 
     /// After run(): the displacement at every node of every block.
-    std::vector<NodalDisplacement>
+    std::vector<NodalDisplacement<dim>>
     nodal_displacements() const;
+
+    /// After run(): the supports' reactions and the balance of forces.
+    const Statics<dim> &
+    statics() const
+    {
+      return balance;
+    }
 
     /// The force unit of the LCP handed to the solvers (problem() and
     /// solution() are in it): the largest Young's modulus divided by 4e3
@@ -132,8 +171,8 @@ namespace unilateral::masonry
     force_unit() const;
 
   protected:
-    /// The layout of the chosen bond and its mesh: every block meshed on its
-    /// own with cells of size h = H / 2^r, material_id = block index.
+    /// The blocks: a built-in wall's layout meshed block by block (cells of
+    /// size h = H / 2^r), or a mesh file's blocks; material_id = block index.
     void
     make_grid(RunContext &context) override;
 
@@ -147,7 +186,7 @@ namespace unilateral::masonry
     assemble_system(RunContext &context) override;
 
     /// u = C~^-1 u~, each constraint's gap, force and state, the energy in
-    /// the parameter file's units.
+    /// the parameter file's units, the reactions.
     void
     postprocess(const RunContext &context, lcp::Report &report) override;
 
@@ -162,8 +201,12 @@ namespace unilateral::masonry
     add_summary(JsonObject &summary) const override;
 
   private:
-    double
-    coincidence_tolerance() const;
+    /// What the summary calls the structure ("stack bond", "arch.msh").
+    std::string
+    structure_name() const;
+
+    void
+    compute_statics();
 
     Parameters parameters;
     /// Set if the scene was given its own layout.
@@ -173,12 +216,19 @@ namespace unilateral::masonry
     struct State;
     std::unique_ptr<State> state;
 
-    Sizes                         problem_sizes;
-    std::vector<ConstraintResult> constraints;
-    double                        max_displacement  = 0;
-    double                        unit              = 1;
-    unsigned int                  n_closed_contacts = 0;
+    Sizes                              problem_sizes;
+    std::vector<ConstraintResult<dim>> constraints;
+    Statics<dim>                       balance;
+    double                             max_displacement  = 0;
+    double                             unit              = 1;
+    double                             energy_offset     = 0;
+    unsigned int                       n_closed_contacts = 0;
     /// Closed without force (see postprocess).
     unsigned int n_degenerate_contacts = 0;
   };
+
+  /// The scene of the parameter file: MasonryScene<2> or <3> by
+  /// 'Masonry/Dimension' (the registry's factory).
+  std::unique_ptr<Scene>
+  create_masonry_scene(dealii::ParameterHandler &prm);
 } // namespace unilateral::masonry

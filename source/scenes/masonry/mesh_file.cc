@@ -1,0 +1,615 @@
+#include <unilateral/base/input_error.h>
+#include <unilateral/scenes/masonry/mesh_file.h>
+
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+namespace unilateral::masonry
+{
+  namespace
+  {
+    /// One cell of the file: its geometric entity and physical tag, and
+    /// its centroid (to find it among GridIn's cells).
+    template <int dim>
+    struct FileCell
+    {
+      int                entity;
+      int                physical;
+      dealii::Point<dim> centroid;
+    };
+
+    /// What GridIn does not keep: the entities of the cells and the names
+    /// of the physical tags.
+    template <int dim>
+    struct GmshScan
+    {
+      std::vector<FileCell<dim>> cells;
+      std::map<int, std::string> cell_tag_names;
+      std::map<std::string, int> boundary_tag_names;
+      double                     smallest_edge = 0;
+      bool                       simplex       = false;
+    };
+
+    [[noreturn]] void
+    fail(const std::string &file, const std::string &what)
+    {
+      throw InputError("mesh file '" + file + "': " + what);
+    }
+
+    /// The number of vertices of a linear cell of gmsh type @p type in
+    /// dimension @p dim (2: triangle, 3: quadrilateral, 4: tetrahedron,
+    /// 5: hexahedron), 0 for lower-dimensional elements; InputError for
+    /// other cells of dimension dim.
+    int
+    cell_vertices(const int type, const int dim, const std::string &file)
+    {
+      const std::map<int, std::pair<int, int>> linear = {{1, {1, 2}},
+                                                         {15, {0, 1}},
+                                                         {2, {2, 3}},
+                                                         {3, {2, 4}},
+                                                         {4, {3, 4}},
+                                                         {5, {3, 8}},
+                                                         {6, {3, 6}},
+                                                         {7, {3, 5}}};
+      const auto                               found  = linear.find(type);
+      if (found == linear.end())
+        fail(file,
+             "element type " + std::to_string(type) +
+               " is not a linear cell; mesh with first-order elements "
+               "(gmsh -order 1): quadrilaterals or triangles in 2D, "
+               "hexahedra or tetrahedra in 3D");
+      if (found->second.first != dim)
+        return 0;
+      if (type == 6 || type == 7)
+        fail(file,
+             "prisms and pyramids are not supported: mesh the blocks with "
+             "hexahedra or tetrahedra");
+      return found->second.second;
+    }
+
+    template <int dim>
+    GmshScan<dim>
+    scan_gmsh(const std::string &file)
+    {
+      std::ifstream                      in(file);
+      GmshScan<dim>                      scan;
+      std::string                        section;
+      double                             version = 0;
+      std::map<long, dealii::Point<3>>   nodes;
+      std::map<std::pair<int, int>, int> entity_physical; // (dim, tag)
+      struct Element
+      {
+        int               entity, physical, type;
+        std::vector<long> nodes;
+      };
+      std::vector<Element> elements;
+      auto                 read_or_fail = [&](auto &value) {
+        if (!(in >> value))
+          fail(file, "unexpected end or bad number in section " + section);
+      };
+      while (in >> section)
+        {
+          if (section == "$MeshFormat")
+            {
+              int binary = 0, size = 0;
+              read_or_fail(version);
+              read_or_fail(binary);
+              read_or_fail(size);
+              if (binary != 0)
+                fail(file, "binary files are not read: save it as ASCII");
+              if (version != 2.2 && version != 4.1)
+                {
+                  std::ostringstream v;
+                  v << version;
+                  fail(file,
+                       "format " + v.str() +
+                         " is not read: save it in format 2.2 or 4.1 (gmsh "
+                         "-format msh22 or msh41)");
+                }
+            }
+          else if (section == "$PhysicalNames")
+            {
+              int n = 0;
+              read_or_fail(n);
+              for (int i = 0; i < n; ++i)
+                {
+                  int         d = 0, tag = 0;
+                  std::string name;
+                  read_or_fail(d);
+                  read_or_fail(tag);
+                  std::getline(in, name);
+                  name = dealii::Utilities::trim(name);
+                  if (name.size() >= 2 && name.front() == '"')
+                    name = name.substr(1, name.size() - 2);
+                  if (d == dim)
+                    scan.cell_tag_names[tag] = name;
+                  else if (d == dim - 1)
+                    scan.boundary_tag_names[name] = tag;
+                }
+            }
+          else if (section == "$Entities")
+            {
+              std::array<long, 4> counts{};
+              for (long &c : counts)
+                read_or_fail(c);
+              for (int d = 0; d < 4; ++d)
+                for (long e = 0; e < counts[d]; ++e)
+                  {
+                    int    tag = 0;
+                    double box = 0;
+                    long   n   = 0;
+                    read_or_fail(tag);
+                    for (int k = 0; k < (d == 0 ? 3 : 6); ++k)
+                      read_or_fail(box);
+                    read_or_fail(n);
+                    for (long k = 0; k < n; ++k)
+                      {
+                        int physical = 0;
+                        read_or_fail(physical);
+                        if (k == 0)
+                          entity_physical[{d, tag}] = physical;
+                      }
+                    if (d > 0)
+                      {
+                        read_or_fail(n);
+                        for (long k = 0; k < n; ++k)
+                          read_or_fail(box);
+                      }
+                  }
+            }
+          else if (section == "$Nodes")
+            {
+              if (version == 2.2)
+                {
+                  long n = 0;
+                  read_or_fail(n);
+                  for (long i = 0; i < n; ++i)
+                    {
+                      long             tag = 0;
+                      dealii::Point<3> p;
+                      read_or_fail(tag);
+                      for (unsigned int d = 0; d < 3; ++d)
+                        read_or_fail(p[d]);
+                      nodes[tag] = p;
+                    }
+                }
+              else
+                {
+                  long blocks = 0, n = 0, lo = 0, hi = 0;
+                  read_or_fail(blocks);
+                  read_or_fail(n);
+                  read_or_fail(lo);
+                  read_or_fail(hi);
+                  for (long b = 0; b < blocks; ++b)
+                    {
+                      int  entity_dim = 0, tag = 0, parametric = 0;
+                      long count = 0;
+                      read_or_fail(entity_dim);
+                      read_or_fail(tag);
+                      read_or_fail(parametric);
+                      read_or_fail(count);
+                      if (parametric != 0)
+                        fail(file,
+                             "parametric node coordinates are not read: save "
+                             "without them (Mesh.SaveParametric = 0)");
+                      std::vector<long> tags(count);
+                      for (long &t : tags)
+                        read_or_fail(t);
+                      for (const long t : tags)
+                        {
+                          dealii::Point<3> p;
+                          for (unsigned int d = 0; d < 3; ++d)
+                            read_or_fail(p[d]);
+                          nodes[t] = p;
+                        }
+                    }
+                }
+            }
+          else if (section == "$Elements")
+            {
+              auto read_element =
+                [&](const int entity, const int physical, const int type) {
+                  Element    element{entity, physical, type, {}};
+                  const int  n = cell_vertices(type, dim, file);
+                  const long k = n > 0 ? n :
+                                         std::map<int, int>{{1, 2},
+                                                            {15, 1},
+                                                            {2, 3},
+                                                            {3, 4},
+                                                            {4, 4},
+                                                            {5, 8},
+                                                            {6, 6},
+                                                            {7, 5}}
+                                           .at(type);
+                  element.nodes.resize(k);
+                  for (long &node : element.nodes)
+                    read_or_fail(node);
+                  if (n > 0)
+                    elements.push_back(std::move(element));
+                };
+              if (version == 2.2)
+                {
+                  long n = 0;
+                  read_or_fail(n);
+                  for (long i = 0; i < n; ++i)
+                    {
+                      long tag  = 0;
+                      int  type = 0, n_tags = 0, physical = 0, entity = 0;
+                      read_or_fail(tag);
+                      read_or_fail(type);
+                      read_or_fail(n_tags);
+                      for (int t = 0; t < n_tags; ++t)
+                        {
+                          int value = 0;
+                          read_or_fail(value);
+                          if (t == 0)
+                            physical = value;
+                          else if (t == 1)
+                            entity = value;
+                        }
+                      read_element(entity, physical, type);
+                    }
+                }
+              else
+                {
+                  long blocks = 0, n = 0, lo = 0, hi = 0;
+                  read_or_fail(blocks);
+                  read_or_fail(n);
+                  read_or_fail(lo);
+                  read_or_fail(hi);
+                  for (long b = 0; b < blocks; ++b)
+                    {
+                      int  entity_dim = 0, entity = 0, type = 0;
+                      long count = 0;
+                      read_or_fail(entity_dim);
+                      read_or_fail(entity);
+                      read_or_fail(type);
+                      read_or_fail(count);
+                      const auto physical =
+                        entity_physical.find({entity_dim, entity});
+                      for (long i = 0; i < count; ++i)
+                        {
+                          long tag = 0;
+                          read_or_fail(tag);
+                          read_element(entity,
+                                       physical == entity_physical.end() ?
+                                         0 :
+                                         physical->second,
+                                       type);
+                        }
+                    }
+                }
+            }
+        }
+      if (version == 0)
+        fail(file, "no $MeshFormat section: not a Gmsh mesh");
+      if (elements.empty())
+        fail(file,
+             "no cells of dimension " + std::to_string(dim) +
+               " (quadrilaterals or triangles in 2D, hexahedra or tetrahedra "
+               "in 3D): check 'Masonry/Dimension' and the file");
+      scan.simplex = elements.front().type == 2 || elements.front().type == 4;
+      scan.smallest_edge = std::numeric_limits<double>::max();
+      for (const Element &element : elements)
+        {
+          if ((element.type == 2 || element.type == 4) != scan.simplex)
+            fail(file,
+                 "mixes simplices and hypercubes: mesh every block with "
+                 "quadrilaterals or every block with triangles (hexahedra or "
+                 "tetrahedra in 3D)");
+          FileCell<dim> cell{element.entity, element.physical, {}};
+          for (const long node : element.nodes)
+            {
+              const auto found = nodes.find(node);
+              if (found == nodes.end())
+                fail(file,
+                     "an element refers to node " + std::to_string(node) +
+                       ", which the file does not define");
+              if (dim == 2 && std::abs(found->second[2]) > 0)
+                fail(file,
+                     "a 2D mesh must lie in the plane z = 0 (node " +
+                       std::to_string(node) + " has z != 0)");
+              for (unsigned int d = 0; d < dim; ++d)
+                cell.centroid[d] +=
+                  found->second[d] / static_cast<double>(element.nodes.size());
+            }
+          for (std::size_t a = 1; a < element.nodes.size(); ++a)
+            scan.smallest_edge = std::min(scan.smallest_edge,
+                                          nodes[element.nodes[a]].distance(
+                                            nodes[element.nodes[0]]));
+          scan.cells.push_back(cell);
+        }
+      return scan;
+    }
+
+    /// Rounded coordinates, for finding points again.
+    template <int dim>
+    std::array<long long, dim>
+    grid_key(const dealii::Point<dim> &p, const double spacing)
+    {
+      std::array<long long, dim> key;
+      for (unsigned int d = 0; d < dim; ++d)
+        key[d] = std::llround(std::floor(p[d] / spacing));
+      return key;
+    }
+
+    /// The entry of @p map nearest to @p p within @p spacing (probing the
+    /// neighbouring grid cells), or nullptr.
+    template <int dim, typename T>
+    const T *
+    find_near(
+      const std::map<std::array<long long, dim>,
+                     std::vector<std::pair<dealii::Point<dim>, T>>> &map,
+      const dealii::Point<dim>                                      &p,
+      const double                                                   spacing)
+    {
+      const auto key      = grid_key<dim>(p, spacing);
+      const T   *best     = nullptr;
+      double     distance = spacing;
+      for (unsigned int probe = 0; probe < (dim == 2 ? 9u : 27u); ++probe)
+        {
+          auto neighbour = key;
+          for (unsigned int d = 0, q = probe; d < dim; ++d, q /= 3)
+            neighbour[d] += static_cast<long long>(q % 3) - 1;
+          const auto found = map.find(neighbour);
+          if (found == map.end())
+            continue;
+          for (const auto &[point, value] : found->second)
+            if (point.distance(p) < distance)
+              {
+                distance = point.distance(p);
+                best     = &value;
+              }
+        }
+      return best;
+    }
+
+    /// Whether every corner of @p cell is positively oriented (hypercubes)
+    /// or the simplex has positive volume.
+    template <int dim>
+    bool
+    positively_oriented(const std::vector<dealii::Point<dim>> &v)
+    {
+      auto det = [](const dealii::Tensor<1, dim> &a,
+                    const dealii::Tensor<1, dim> &b,
+                    const dealii::Tensor<1, dim> &c) {
+        if constexpr (dim == 2)
+          return a[0] * b[1] - a[1] * b[0] + 0 * c[0];
+        else
+          return dealii::cross_product_3d(a, b) * c;
+      };
+      const dealii::Tensor<1, dim> none;
+      if (v.size() == dim + 1)
+        return det(v[1] - v[0], v[2] - v[0], dim == 3 ? v[dim] - v[0] : none) >
+               0;
+      // Each corner's edges along x, y (, z) in the lexicographic order.
+      for (unsigned int corner = 0; corner < v.size(); ++corner)
+        {
+          std::array<dealii::Tensor<1, dim>, dim> edge;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const unsigned int other = corner ^ (1u << d);
+              edge[d] = (corner & (1u << d)) ? v[corner] - v[other] :
+                                               v[other] - v[corner];
+            }
+          if (det(edge[0], edge[1], dim == 3 ? edge[dim - 1] : none) <= 0)
+            return false;
+        }
+      return true;
+    }
+  } // namespace
+
+  template <int dim>
+  MeshFileBlocks
+  read_mesh_file(const std::string               &file_name,
+                 dealii::Triangulation<dim, dim> &triangulation)
+  {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file_name, error))
+      fail(file_name,
+           std::filesystem::exists(file_name, error) ?
+             "not a file" :
+             "no such file: check 'Masonry/Mesh file' (a relative path is "
+             "taken from the parameter file's folder)");
+    const GmshScan<dim> scan = scan_gmsh<dim>(file_name);
+
+    // The mesh as GridIn reads it, vertices shared between blocks.
+    dealii::Triangulation<dim, dim> file_mesh;
+    try
+      {
+        dealii::GridIn<dim, dim> grid_in;
+        grid_in.attach_triangulation(file_mesh);
+        std::ifstream in(file_name);
+        grid_in.read_msh(in);
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::exception &exception)
+      {
+        std::string reason = exception.what();
+        const auto  at     = reason.find("Additional information:");
+        if (at != std::string::npos)
+          reason = reason.substr(at + 23);
+        std::replace(reason.begin(), reason.end(), '\n', ' ');
+        fail(file_name,
+             "deal.II's GridIn cannot read it: " +
+               dealii::Utilities::trim(reason));
+      }
+
+    // The entity and physical tag of each of GridIn's cells, found by its
+    // centroid.
+    const double spacing = 1e-3 * scan.smallest_edge;
+    std::map<std::array<long long, dim>,
+             std::vector<std::pair<dealii::Point<dim>, std::size_t>>>
+      by_centroid;
+    for (std::size_t c = 0; c < scan.cells.size(); ++c)
+      by_centroid[grid_key<dim>(scan.cells[c].centroid, spacing)].push_back(
+        {scan.cells[c].centroid, c});
+    const auto                             n_cells = file_mesh.n_active_cells();
+    std::vector<std::size_t>               file_cell(n_cells);
+    std::vector<std::vector<unsigned int>> cells_at_vertex(
+      file_mesh.n_vertices());
+    for (const auto &cell : file_mesh.active_cell_iterators())
+      {
+        dealii::Point<dim> centroid;
+        for (const unsigned int v : cell->vertex_indices())
+          centroid += cell->vertex(v) / static_cast<double>(cell->n_vertices());
+        const std::size_t *found =
+          find_near<dim>(by_centroid, centroid, spacing);
+        if (found == nullptr)
+          fail(file_name,
+               "a cell GridIn read was not found among the file's "
+               "elements (duplicate or overlapping elements?)");
+        file_cell[cell->active_cell_index()] = *found;
+        for (const unsigned int v : cell->vertex_indices())
+          cells_at_vertex[cell->vertex_index(v)].push_back(
+            cell->active_cell_index());
+      }
+
+    // Blocks: cells sharing a vertex, with the same entity and tag.
+    std::vector<unsigned int> parent(n_cells);
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto find = [&](unsigned int c) {
+      while (parent[c] != c)
+        c = parent[c] = parent[parent[c]];
+      return c;
+    };
+    auto same_body = [&](const unsigned int a, const unsigned int b) {
+      const FileCell<dim> &x = scan.cells[file_cell[a]];
+      const FileCell<dim> &y = scan.cells[file_cell[b]];
+      return x.entity == y.entity && x.physical == y.physical;
+    };
+    for (const auto &cells : cells_at_vertex)
+      for (std::size_t i = 1; i < cells.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (same_body(cells[i], cells[j]))
+            parent[find(cells[i])] = find(cells[j]);
+    std::vector<int> block_of_root(n_cells, -1);
+    MeshFileBlocks   result;
+    result.simplex = scan.simplex;
+    std::vector<unsigned int> block(n_cells);
+    for (const auto &cell : file_mesh.active_cell_iterators())
+      {
+        const unsigned int c    = cell->active_cell_index();
+        const unsigned int root = find(c);
+        if (block_of_root[root] < 0)
+          {
+            block_of_root[root] = static_cast<int>(result.tag_of_block.size());
+            const int  tag      = scan.cells[file_cell[c]].physical;
+            const auto name     = scan.cell_tag_names.find(tag);
+            result.tag_of_block.push_back(name != scan.cell_tag_names.end() ?
+                                            name->second :
+                                            std::to_string(tag));
+            result.tag_number_of_block.push_back(
+              static_cast<unsigned int>(tag));
+          }
+        block[c] = static_cast<unsigned int>(block_of_root[root]);
+      }
+
+    // The blocks' own vertices, and the boundary ids by face centre.
+    std::vector<dealii::Point<dim>>                               vertices;
+    std::vector<dealii::CellData<dim>>                            cells;
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> new_vertex;
+    std::map<std::array<long long, dim>,
+             std::vector<
+               std::pair<dealii::Point<dim>,
+                         std::pair<unsigned int, dealii::types::boundary_id>>>>
+      boundary_faces;
+    for (const auto &cell : file_mesh.active_cell_iterators())
+      {
+        const unsigned int              b = block[cell->active_cell_index()];
+        dealii::CellData<dim>           data(cell->n_vertices());
+        std::vector<dealii::Point<dim>> corners;
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto key = std::make_pair(b, cell->vertex_index(v));
+            auto       it  = new_vertex.find(key);
+            if (it == new_vertex.end())
+              {
+                it = new_vertex
+                       .emplace(key, static_cast<unsigned int>(vertices.size()))
+                       .first;
+                vertices.push_back(cell->vertex(v));
+              }
+            data.vertices[v] = it->second;
+            corners.push_back(cell->vertex(v));
+          }
+        if (!positively_oriented<dim>(corners))
+          {
+            std::ostringstream where;
+            where << cell->center();
+            fail(file_name,
+                 "the cell at (" + where.str() + ") of block " +
+                   std::to_string(b) +
+                   " is inverted or tangled (a corner with a non-positive "
+                   "Jacobian): fix its vertex order or shape");
+          }
+        data.material_id = b;
+        cells.push_back(std::move(data));
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() != 0)
+            boundary_faces[grid_key<dim>(cell->face(f)->center(), spacing)]
+              .push_back(
+                {cell->face(f)->center(), {b, cell->face(f)->boundary_id()}});
+      }
+    triangulation.clear();
+    try
+      {
+        triangulation.create_triangulation(vertices,
+                                           cells,
+                                           dealii::SubCellData());
+      }
+    catch (const std::exception &exception)
+      {
+        std::string reason = exception.what();
+        std::replace(reason.begin(), reason.end(), '\n', ' ');
+        fail(file_name,
+             "its blocks do not form a valid mesh: " +
+               dealii::Utilities::trim(reason));
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            cell->face(f)->set_boundary_id(0);
+            const dealii::Point<dim> centre = cell->face(f)->center();
+            const auto               key    = grid_key<dim>(centre, spacing);
+            for (unsigned int probe = 0; probe < (dim == 2 ? 9u : 27u); ++probe)
+              {
+                auto neighbour = key;
+                for (unsigned int d = 0, q = probe; d < dim; ++d, q /= 3)
+                  neighbour[d] += static_cast<long long>(q % 3) - 1;
+                const auto found = boundary_faces.find(neighbour);
+                if (found != boundary_faces.end())
+                  for (const auto &[point, id] : found->second)
+                    if (id.first == cell->material_id() &&
+                        point.distance(centre) < spacing)
+                      cell->face(f)->set_boundary_id(id.second);
+              }
+          }
+
+    BoundaryNames &names = result.boundaries;
+    names.source         = std::filesystem::path(file_name).filename().string();
+    for (const auto &[name, tag] : scan.boundary_tag_names)
+      names.id_of_name[name] = static_cast<dealii::types::boundary_id>(tag);
+    for (const auto id : triangulation.get_boundary_ids())
+      names.ids_on_boundary.insert(id);
+    return result;
+  }
+
+  template MeshFileBlocks
+  read_mesh_file<2>(const std::string &, dealii::Triangulation<2, 2> &);
+  template MeshFileBlocks
+  read_mesh_file<3>(const std::string &, dealii::Triangulation<3, 3> &);
+} // namespace unilateral::masonry
