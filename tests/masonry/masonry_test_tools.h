@@ -39,18 +39,21 @@ namespace masonry_test
   }
 
   /// A scene that has run (solved, no VTU), with its report.
-  struct Run
+  template <int dim>
+  struct RunOf
   {
-    std::unique_ptr<MasonryScene<2>> scene;
-    lcp::Report                      report;
+    std::unique_ptr<MasonryScene<dim>> scene;
+    lcp::Report                        report;
   };
+  using Run = RunOf<2>;
 
-  inline Run
+  template <int dim = 2>
+  inline RunOf<dim>
   run(const Setup &setup, const std::string &name)
   {
     static std::ostringstream quiet;
-    Run                       result;
-    result.scene = std::make_unique<MasonryScene<2>>(setup.parameters);
+    RunOf<dim>                result;
+    result.scene = std::make_unique<MasonryScene<dim>>(setup.parameters);
     dealii::TimerOutput timer(quiet,
                               dealii::TimerOutput::never,
                               dealii::TimerOutput::wall_times);

@@ -736,6 +736,21 @@ namespace unilateral::masonry
                 for (double &c : n)
                   c = -c;
               }
+            // A joint whose two nodes are both held in its direction (held,
+            // or a roller along it) can neither open nor close: its row
+            // would repeat the supports' (a dependent row), so it goes.
+            auto held_along = [&](const unsigned int node) {
+              const NodeConditions<dim> &c = conditions[node];
+              if (c.held_support >= 0)
+                return true;
+              for (const auto &roller : c.rollers.groups)
+                if (std::abs(as_tensor<dim>(roller.mean()) *
+                             as_tensor<dim>(n)) > 1 - 1e-9)
+                  return true;
+              return false;
+            };
+            if (held_along(lower) && held_along(upper))
+              continue;
             JointRow joint{{ConstraintKind::joint, lower, upper, n, 0.0}, {}};
             for (const std::size_t r : group.items)
               for (const std::size_t f :

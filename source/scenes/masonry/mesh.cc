@@ -137,6 +137,8 @@ namespace unilateral::masonry
       {
         names.id_of_name["front"] = wall_boundary::front;
         names.id_of_name["back"]  = wall_boundary::back;
+        names.id_of_name["collar"] = wall_boundary::collar;
+        names.optional.insert("collar");
       }
     for (const auto id : triangulation.get_boundary_ids())
       names.ids_on_boundary.insert(id);
@@ -220,6 +222,10 @@ namespace unilateral::masonry
               id = wall_boundary::front;
             else if (dim == 3 && on(dim - 1, thickness))
               id = wall_boundary::back;
+            else
+              for (unsigned int layer = 1; layer < layers; ++layer)
+                if (dim == 3 && on(dim - 1, along(0, thickness, layer, layers)))
+                  id = wall_boundary::collar;
             cell->face(f)->set_boundary_id(id);
           }
   }

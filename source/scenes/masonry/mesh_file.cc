@@ -2,6 +2,9 @@
 #include <unilateral/scenes/masonry/mesh_file.h>
 
 #include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
@@ -10,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <sstream>
 
@@ -406,6 +410,103 @@ namespace unilateral::masonry
         }
       return true;
     }
+
+    /**
+     * Blocks that overlap: a vertex or the centre of a cell strictly inside
+     * a cell of another block (by more than a millionth of the cell, in its
+     * reference coordinates). Cells are found through a grid of their
+     * bounding boxes.
+     */
+    template <int dim>
+    void
+    check_no_overlap(const dealii::Triangulation<dim> &triangulation,
+                     const bool                        simplex,
+                     const std::string                &file)
+    {
+      std::unique_ptr<dealii::Mapping<dim>> mapping;
+      if (simplex)
+        mapping = std::make_unique<dealii::MappingFE<dim>>(
+          dealii::FE_SimplexP<dim>(1));
+      else
+        mapping = std::make_unique<dealii::MappingQ<dim>>(1);
+      double spacing = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        spacing = std::max(spacing, cell->diameter());
+      using Key = std::array<long long, dim>;
+      std::map<Key, std::vector<unsigned int>> grid;
+      std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
+        cells;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          const auto box = cell->bounding_box();
+          const Key  lo  = grid_key<dim>(box.get_boundary_points().first,
+                                       spacing);
+          const Key  hi  = grid_key<dim>(box.get_boundary_points().second,
+                                       spacing);
+          Key k = lo;
+          // Every grid cell the box touches (at most 2 per axis).
+          for (unsigned int probe = 0; probe < (1u << dim); ++probe)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                k[d] = (probe >> d) & 1 ? hi[d] : lo[d];
+              auto &list = grid[k];
+              if (list.empty() || list.back() != cells.size())
+                list.push_back(static_cast<unsigned int>(cells.size()));
+            }
+          cells.push_back(cell);
+        }
+      constexpr double margin = 1e-6;
+      auto strictly_inside = [&](const dealii::Point<dim> &unit) {
+        double sum = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (unit[d] <= margin || (!simplex && unit[d] >= 1 - margin))
+              return false;
+            sum += unit[d];
+          }
+        return !simplex || sum < 1 - margin;
+      };
+      for (const auto &cell : cells)
+        {
+          std::vector<dealii::Point<dim>> points{cell->center()};
+          for (const unsigned int v : cell->vertex_indices())
+            points.push_back(cell->vertex(v));
+          for (const auto &p : points)
+            {
+              const auto found = grid.find(grid_key<dim>(p, spacing));
+              if (found == grid.end())
+                continue;
+              for (const unsigned int other : found->second)
+                {
+                  const auto &o = cells[other];
+                  if (o->material_id() == cell->material_id() ||
+                      !o->bounding_box().point_inside(p))
+                    continue;
+                  dealii::Point<dim> unit;
+                  try
+                    {
+                      unit = mapping->transform_real_to_unit_cell(o, p);
+                    }
+                  catch (...)
+                    {
+                      continue; // outside: the inverse does not converge
+                    }
+                  if (strictly_inside(unit))
+                    {
+                      std::ostringstream where;
+                      where << p;
+                      fail(file,
+                           "blocks " + std::to_string(cell->material_id()) +
+                             " and " + std::to_string(o->material_id()) +
+                             " overlap (a point of the first at (" +
+                             where.str() +
+                             ") lies inside the second): blocks may touch, "
+                             "not overlap");
+                    }
+                }
+            }
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -598,6 +699,8 @@ namespace unilateral::masonry
                       cell->face(f)->set_boundary_id(id.second);
               }
           }
+
+    check_no_overlap<dim>(triangulation, scan.simplex, file_name);
 
     BoundaryNames &names = result.boundaries;
     names.source         = std::filesystem::path(file_name).filename().string();

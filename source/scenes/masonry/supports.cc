@@ -110,6 +110,8 @@ namespace unilateral::masonry
                   number >= 0 && number < 255;
           id = static_cast<dealii::types::boundary_id>(number);
         }
+      if (found && names.optional.count(selection.boundary) > 0)
+        return id;
       if (!found || names.ids_on_boundary.count(id) == 0)
         {
           std::ostringstream known;

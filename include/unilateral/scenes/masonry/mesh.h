@@ -21,10 +21,13 @@ namespace unilateral::masonry
     constexpr unsigned int top   = 4; ///< y = y_max
     constexpr unsigned int front = 5; ///< z = 0 (3D)
     constexpr unsigned int back  = 6; ///< z = thickness (3D)
+    /// Between blocks behind each other (3D): their collar joints.
+    constexpr unsigned int collar = 7;
   }                                   // namespace wall_boundary
 
   /// The names of the built-in walls' boundaries (left, right, base, top;
-  /// front and back in 3D) and the ids on @p triangulation's boundary.
+  /// front, back and collar in 3D) and the ids on @p triangulation's
+  /// boundary.
   template <int dim>
   BoundaryNames
   wall_boundary_names(const dealii::Triangulation<dim, dim> &triangulation);
@@ -38,7 +41,8 @@ namespace unilateral::masonry
    * z in [0, thickness], with round(depth / cell_size) cells each. Every
    * cell's material_id is its block index (in 3D block b of the layout
    * becomes blocks b k, ..., b k + k - 1); the faces on the bounding box get
-   * the ids of wall_boundary. With P2 each square is split into two
+   * the ids of wall_boundary, and so do the faces between blocks behind
+   * each other (collar). With P2 each square is split into two
    * triangles along its rising diagonal, each cube into six tetrahedra
    * around its main diagonal (the same nodes as Q2).
    *

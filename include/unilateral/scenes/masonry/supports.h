@@ -23,6 +23,9 @@ namespace unilateral::masonry
     std::set<dealii::types::boundary_id>              ids_on_boundary;
     /// What the boundaries belong to, for messages ("arch.msh").
     std::string source;
+    /// Names that may be absent from the mesh without an error (the
+    /// built-in walls' collar, which a wall one block thick has not).
+    std::set<std::string> optional;
 
     /// The name of @p id (its number if it has none).
     std::string
