@@ -39,13 +39,13 @@ namespace
       run(parse("subsection Masonry\n" + common + "  end\nend\n"), "plane");
     for (const unsigned int blocks : {1u, 2u})
       {
-        const RunOf<3> solid = run<3>(
-          parse("subsection Masonry\n  set Dimension = 3\n"
-                "  set Blocks through the thickness = " +
-                std::to_string(blocks) + "\n" + common +
-                "    set Normal displacement zero = left, right, front, "
-                "back, collar, base where x > s\n  end\nend\n"),
-          "solid");
+        const RunOf<3> solid =
+          run<3>(parse("subsection Masonry\n  set Dimension = 3\n"
+                       "  set Blocks through the thickness = " +
+                       std::to_string(blocks) + "\n" + common +
+                       "    set Normal displacement zero = left, right, front, "
+                       "back, collar, base where x > s\n  end\nend\n"),
+                 "solid");
         const double thickness = 0.25; // T = H
         const double energy    = solid.report.energy / thickness;
         std::cout << geometry << ", g = " << gap << " H, " << blocks
@@ -54,8 +54,7 @@ namespace
                   << "; energy / T = 2D energy to 1e-10: "
                   << yes_no(std::abs(energy - plane.report.energy) <=
                             1e-10 * std::abs(plane.report.energy))
-                  << "; contacts carrying force = " << 3 * blocks
-                  << " x 2D: "
+                  << "; contacts carrying force = " << 3 * blocks << " x 2D: "
                   << yes_no(carrying(solid) == 3 * blocks * carrying(plane))
                   << "\n";
       }

@@ -24,25 +24,26 @@ namespace
   {
     std::ostringstream prm;
     prm << "subsection Masonry\n  set Dimension = 3\n  set Geometry = "
-        << geometry << "\n  set Blocks per side = 3\n  set Element = "
-        << element << "\n  set Blocks through the thickness = 2\n"
+        << geometry
+        << "\n  set Blocks per side = 3\n  set Element = " << element
+        << "\n  set Blocks through the thickness = 2\n"
         << "  subsection Boundary conditions\n    set Relative gap = 0\n"
         << "    set Normal displacement zero = left, right, front, back, "
            "base where x > s\n  end\nend\n";
-    const Setup        setup = parse(prm.str());
-    const RunOf<3>     run   = masonry_test::run<3>(setup, "column");
-    const MaterialClass m    = setup.parameters.materials.classes[0];
-    const double       modulus = m.lambda() + 2 * m.mu();
-    double             error = 0, largest = 0;
+    const Setup         setup   = parse(prm.str());
+    const RunOf<3>      run     = masonry_test::run<3>(setup, "column");
+    const MaterialClass m       = setup.parameters.materials.classes[0];
+    const double        modulus = m.lambda() + 2 * m.mu();
+    double              error = 0, largest = 0;
     for (const auto &node : run.scene->nodal_displacements())
       {
         const double y     = node.position[1];
         const double exact = -m.density * (y - y * y / 2) / modulus;
         largest            = std::max(largest, std::abs(exact));
-        error = std::max({error,
-                          std::abs(node.displacement[0]),
-                          std::abs(node.displacement[1] - exact),
-                          std::abs(node.displacement[2])});
+        error              = std::max({error,
+                                       std::abs(node.displacement[0]),
+                                       std::abs(node.displacement[1] - exact),
+                                       std::abs(node.displacement[2])});
       }
     double largest_gap = 0;
     for (const auto &c : run.scene->constraint_results())
@@ -68,7 +69,7 @@ namespace
   {
     const double a = 1, b = a * std::tan(theta);
     // deal.II's lexicographic order: apex, right, left, top.
-    const double x[4] = {0, a, -a, 0}, y[4] = {0, b, b, 2};
+    const double  x[4] = {0, a, -a, 0}, y[4] = {0, b, b, 2};
     std::ofstream out(file);
     out.precision(17);
     const int n_z = dim == 3 ? 2 : 1;
@@ -101,8 +102,8 @@ namespace
         << "\n    set Traction boundaries =\n  end\nend\n";
     const RunOf<dim> run = masonry_test::run<dim>(parse(prm.str()), "groove");
     // W = rho gravity times the kite's area (times its depth 1 in 3D).
-    const double weight = 0.5 * 2 * 2;
-    const double exact  = weight / (2 * std::cos(theta));
+    const double weight  = 0.5 * 2 * 2;
+    const double exact   = weight / (2 * std::cos(theta));
     const auto  &statics = run.scene->statics();
     bool         right   = statics.support.size() == (dim == 3 ? 3 : 2);
     for (std::size_t s = 0; s < statics.support.size(); ++s)
@@ -111,14 +112,14 @@ namespace
           continue; // the front roller, which carries nothing
         const auto  &f = statics.reaction[s];
         const double magnitude =
-          std::sqrt(f[0] * f[0] + f[1] * f[1] + (dim == 3 ? f[dim - 1] : 0) *
-                                                  (dim == 3 ? f[dim - 1] : 0));
+          std::sqrt(f[0] * f[0] + f[1] * f[1] +
+                    (dim == 3 ? f[dim - 1] : 0) * (dim == 3 ? f[dim - 1] : 0));
         // Along the support's normal (sin theta, cos theta), x mirrored.
         const double sign = statics.support[s] == "1" ? -1 : 1;
-        right = right && std::abs(magnitude - exact) < 1e-10 * exact &&
-                std::abs(f[0] - sign * exact * std::sin(theta)) <
-                  1e-10 * exact &&
-                std::abs(f[1] - exact * std::cos(theta)) < 1e-10 * exact;
+        right =
+          right && std::abs(magnitude - exact) < 1e-10 * exact &&
+          std::abs(f[0] - sign * exact * std::sin(theta)) < 1e-10 * exact &&
+          std::abs(f[1] - exact * std::cos(theta)) < 1e-10 * exact;
       }
     std::cout << dim << "D block in a V-groove at +-" << theta_degrees
               << " degrees: converged: " << yes_no(run.report.converged())

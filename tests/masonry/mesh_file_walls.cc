@@ -55,9 +55,8 @@ main()
     for (const double relative_gap : {0.0, 0.5})
       {
         // H = 1/5 for the generator, H = 1 for a mesh file: the same g.
-        const Run built =
-          run(parse(prm(geometry, relative_gap)), "built_in");
-        std::string stem = geometry;
+        const Run   built = run(parse(prm(geometry, relative_gap)), "built_in");
+        std::string stem  = geometry;
         std::replace(stem.begin(), stem.end(), ' ', '_');
         for (const std::string version : {"2", "4"})
           {
@@ -78,9 +77,9 @@ main()
                       << "; contacts carrying force equal: "
                       << yes_no(carrying(built) == carrying(read))
                       << "; energy equal to " << tolerance << ": "
-                      << yes_no(std::abs(built.report.energy -
-                                         read.report.energy) <=
-                                tolerance * std::abs(built.report.energy))
+                      << yes_no(
+                           std::abs(built.report.energy - read.report.energy) <=
+                           tolerance * std::abs(built.report.energy))
                       << "\n";
           }
       }

@@ -64,7 +64,8 @@ namespace
                      << cell->face(f)->vertex_index(0) + 1 << ' '
                      << cell->face(f)->vertex_index(1) + 1 << '\n';
       }
-    out << "$EndNodes\n$Elements\n" << n << '\n'
+    out << "$EndNodes\n$Elements\n"
+        << n << '\n'
         << elements.str() << "$EndElements\n";
   }
 
@@ -89,8 +90,7 @@ namespace
         << "    set Relative gap = " << H / 2 << "\n"
         << "    set Normal displacement zero = 1, 2, 3 where " << c << "*x + "
         << s << "*y > 0.5\n"
-        << "    set Signorini = 3 where " << c << "*x + " << s
-        << "*y < 0.5\n"
+        << "    set Signorini = 3 where " << c << "*x + " << s << "*y < 0.5\n"
         << "    set Traction boundaries = 4\n"
         << "    set Gravity direction = " << s << ", " << -c << "\n"
         << "  end\nend\n";
@@ -131,36 +131,37 @@ namespace
     // Each rotated node's displacement turned back, against the upright
     // node at its position turned back (a node is its position and block).
     std::map<std::array<long long, 3>, std::array<double, 2>> u_upright;
-    double                                                     u_max = 0;
+    double                                                    u_max = 0;
     for (const auto &node : upright.scene->nodal_displacements())
       {
         u_upright[{std::llround(node.position[0] * 1e6),
                    std::llround(node.position[1] * 1e6),
                    node.block}] = node.displacement;
-        u_max = std::max(u_max,
-                         std::hypot(node.displacement[0],
-                                    node.displacement[1]));
+        u_max =
+          std::max(u_max,
+                   std::hypot(node.displacement[0], node.displacement[1]));
       }
     double       error   = 0;
     unsigned int matched = 0;
     // Blocks are numbered alike in both (GridOut keeps the material ids).
     for (const auto &node : rotated.scene->nodal_displacements())
       {
-        const double x = c * node.position[0] + s * node.position[1];
-        const double y = -s * node.position[0] + c * node.position[1];
+        const double x     = c * node.position[0] + s * node.position[1];
+        const double y     = -s * node.position[0] + c * node.position[1];
         const auto   found = u_upright.find(
           {std::llround(x * 1e6), std::llround(y * 1e6), node.block});
         if (found == u_upright.end())
           continue;
         const double ux = c * node.displacement[0] + s * node.displacement[1];
         const double uy = -s * node.displacement[0] + c * node.displacement[1];
-        error = std::max(error,
-                         std::hypot(found->second[0] - ux,
-                                    found->second[1] - uy));
+        error =
+          std::max(error,
+                   std::hypot(found->second[0] - ux, found->second[1] - uy));
         ++matched;
       }
     std::cout << "  displacements turned back equal to 1e-10 of the largest: "
-              << yes_no(matched == rotated.scene->nodal_displacements().size() &&
+              << yes_no(matched ==
+                          rotated.scene->nodal_displacements().size() &&
                         error <= 1e-10 * u_max)
               << "\n";
   }

@@ -135,8 +135,8 @@ namespace unilateral::masonry
                         {"top", wall_boundary::top}};
     if (dim == 3)
       {
-        names.id_of_name["front"] = wall_boundary::front;
-        names.id_of_name["back"]  = wall_boundary::back;
+        names.id_of_name["front"]  = wall_boundary::front;
+        names.id_of_name["back"]   = wall_boundary::back;
         names.id_of_name["collar"] = wall_boundary::collar;
         names.optional.insert("collar");
       }

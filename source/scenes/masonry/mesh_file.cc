@@ -425,8 +425,8 @@ namespace unilateral::masonry
     {
       std::unique_ptr<dealii::Mapping<dim>> mapping;
       if (simplex)
-        mapping = std::make_unique<dealii::MappingFE<dim>>(
-          dealii::FE_SimplexP<dim>(1));
+        mapping =
+          std::make_unique<dealii::MappingFE<dim>>(dealii::FE_SimplexP<dim>(1));
       else
         mapping = std::make_unique<dealii::MappingQ<dim>>(1);
       double spacing = 0;
@@ -439,10 +439,10 @@ namespace unilateral::masonry
       for (const auto &cell : triangulation.active_cell_iterators())
         {
           const auto box = cell->bounding_box();
-          const Key  lo  = grid_key<dim>(box.get_boundary_points().first,
-                                       spacing);
-          const Key  hi  = grid_key<dim>(box.get_boundary_points().second,
-                                       spacing);
+          const Key  lo =
+            grid_key<dim>(box.get_boundary_points().first, spacing);
+          const Key hi =
+            grid_key<dim>(box.get_boundary_points().second, spacing);
           Key k = lo;
           // Every grid cell the box touches (at most 2 per axis).
           for (unsigned int probe = 0; probe < (1u << dim); ++probe)
@@ -455,8 +455,8 @@ namespace unilateral::masonry
             }
           cells.push_back(cell);
         }
-      constexpr double margin = 1e-6;
-      auto strictly_inside = [&](const dealii::Point<dim> &unit) {
+      constexpr double margin          = 1e-6;
+      auto             strictly_inside = [&](const dealii::Point<dim> &unit) {
         double sum = 0;
         for (unsigned int d = 0; d < dim; ++d)
           {

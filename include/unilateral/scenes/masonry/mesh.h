@@ -23,7 +23,7 @@ namespace unilateral::masonry
     constexpr unsigned int back  = 6; ///< z = thickness (3D)
     /// Between blocks behind each other (3D): their collar joints.
     constexpr unsigned int collar = 7;
-  }                                   // namespace wall_boundary
+  } // namespace wall_boundary
 
   /// The names of the built-in walls' boundaries (left, right, base, top;
   /// front, back and collar in 3D) and the ids on @p triangulation's
