@@ -468,9 +468,13 @@ namespace unilateral::masonry
       };
       for (const auto &cell : cells)
         {
+          // The centre, the vertices and the points half-way between.
           std::vector<dealii::Point<dim>> points{cell->center()};
           for (const unsigned int v : cell->vertex_indices())
-            points.push_back(cell->vertex(v));
+            {
+              points.push_back(cell->vertex(v));
+              points.push_back(0.5 * (cell->vertex(v) + cell->center()));
+            }
           for (const auto &p : points)
             {
               const auto found = grid.find(grid_key<dim>(p, spacing));

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace unilateral::masonry
@@ -43,19 +44,29 @@ namespace unilateral::masonry
                                                     {"s", constants.s},
                                                     {"pi", M_PI}};
       const std::string variables                = dim == 2 ? "x,y" : "x,y,z";
+      // deal.II's FunctionParser also writes muparser's message to
+      // std::cerr: silence it, the one line below says it.
+      std::ostringstream silence;
+      std::streambuf    *cerr_buffer = std::cerr.rdbuf(silence.rdbuf());
       try
         {
           function->initialize(variables, components, values);
           dealii::Vector<double> probe(components.size());
           function->vector_value(dealii::Point<dim>(), probe);
+          std::cerr.rdbuf(cerr_buffer);
         }
       catch (const std::exception &error)
         {
-          // muparser's own message, without deal.II's exception banner.
+          std::cerr.rdbuf(cerr_buffer);
+          // muparser's own message, without deal.II's banner and trace.
           std::string       reason = error.what();
-          const std::size_t at     = reason.find("Additional information:");
+          const std::size_t at     = reason.find("The parser said:");
           if (at != std::string::npos)
-            reason = dealii::Utilities::trim(reason.substr(at + 23));
+            reason = reason.substr(at + 16);
+          const std::size_t trace = reason.find("Stacktrace");
+          if (trace != std::string::npos)
+            reason = reason.substr(0, trace);
+          reason = dealii::Utilities::trim(reason);
           for (char &c : reason)
             if (c == '\n')
               c = ' ';

@@ -1,0 +1,107 @@
+// Bad masonry input around mesh files and supports, run as a user runs it:
+// each gives exit code 1 and one line on stderr that names the file or the
+// parameter and says what to do (printed here: the code and the line).
+#include "../application_test_tools.h"
+
+#include <filesystem>
+#include <string>
+
+using namespace application_test;
+
+namespace
+{
+  const std::string unit_square_nodes =
+    "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n";
+  const std::string header = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+
+  /// Two unit squares side by side (x in [0, 1] and [shift, shift + 1]),
+  /// each its own entity; the base lines named 'base' (physical 7).
+  std::string
+  two_squares(const double shift, const int second_tag = 1)
+  {
+    const std::string s0 = std::to_string(shift);
+    const std::string s1 = std::to_string(shift + 1);
+    return header + "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n" +
+           "$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 " + s0 +
+           " 0 0\n6 " + s1 + " 0 0\n7 " + s1 + " 1 0\n8 " + s0 +
+           " 1 0\n$EndNodes\n$Elements\n4\n1 3 2 1 1 1 2 3 4\n2 3 2 " +
+           std::to_string(second_tag) +
+           " 2 5 6 7 8\n3 1 2 7 11 1 2\n4 1 2 7 12 5 6\n$EndElements\n";
+  }
+
+  void
+  bad(const std::string &what,
+      const std::string &mesh,
+      const std::string &masonry_lines = "")
+  {
+    if (!mesh.empty())
+      write("bad.msh", mesh);
+    write("bad.prm",
+          "set Scene = masonry\nsubsection Output\n  set Directory = results\n"
+          "  set Write VTU = false\n  set Progress = false\nend\n"
+          "subsection Masonry\n  set Geometry = mesh file\n"
+          "  set Mesh file = bad.msh\n  subsection Boundary conditions\n"
+          "    set Normal displacement zero =\n    set Signorini =\n"
+          "    set Traction boundaries =\n    set Fixed = base\n  end\n" +
+            masonry_lines + "end\n");
+    const Result result = run({"bad.prm"});
+    std::cout << what << ": exit code " << result.code << ", "
+              << (one_line(result.err) ? "" : "(not one line) ") << result.err;
+  }
+} // namespace
+
+int
+main()
+{
+  std::filesystem::remove("bad.msh");
+  bad("no such file", "");
+  std::filesystem::create_directory("bad.msh");
+  bad("a directory", "");
+  std::filesystem::remove("bad.msh");
+  bad("not a mesh", "hello\n");
+  bad("binary", "$MeshFormat\n2.2 1 8\n$EndMeshFormat\n");
+  bad("format 3", "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n");
+  bad("second-order cells",
+      header + unit_square_nodes +
+        "$Elements\n1\n1 10 2 1 1 1 2 3 4 1 2 3 4 1\n$EndElements\n");
+  bad("a 3D mesh read in 2D",
+      header + unit_square_nodes +
+        "$Elements\n1\n1 4 2 1 1 1 2 3 4\n$EndElements\n");
+  bad("an element with an undefined node",
+      header + unit_square_nodes +
+        "$Elements\n1\n1 3 2 1 1 1 2 3 9\n$EndElements\n");
+  bad("a tangled cell",
+      header + unit_square_nodes +
+        "$Elements\n2\n1 3 2 1 1 1 2 4 3\n2 1 2 7 11 1 2\n$EndElements\n");
+  bad("a degenerate cell",
+      header + unit_square_nodes +
+        "$Elements\n2\n1 3 2 1 1 1 2 2 4\n2 1 2 7 11 1 2\n$EndElements\n");
+  bad("overlapping blocks", two_squares(0.5));
+  bad("a gap between nearly coincident faces", two_squares(1.001));
+  bad("blocks that overlap slightly", two_squares(0.999));
+  bad("a block tag with no material",
+      two_squares(1, 2),
+      "  subsection Materials\n    set Assignment = physical tag\n"
+      "    set Tags = 1\n  end\n");
+  bad("a support that is not a boundary",
+      two_squares(1),
+      "  subsection Boundary conditions\n    set Fixed = springing\n  end\n");
+  bad("a region that does not parse",
+      two_squares(1),
+      "  subsection Boundary conditions\n    set Fixed = base where x <\n"
+      "  end\n");
+  bad("a prescribed displacement with three components in 2D",
+      two_squares(1),
+      "  subsection Boundary conditions\n"
+      "    set Prescribed displacement boundaries = base\n"
+      "    set Prescribed displacement = 0; 1; 2\n  end\n");
+  // Non-matching: the second square (two cells high) meets the first (one
+  // cell) along x = 1; its middle node (1, 0.5) has no partner.
+  bad("non-matching nodes",
+      header +
+        "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
+        "$Nodes\n10\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 1 0 0\n6 2 0 0\n"
+        "7 2 0.5 0\n8 1 0.5 0\n9 2 1 0\n10 1 1 0\n$EndNodes\n"
+        "$Elements\n5\n1 3 2 1 1 1 2 3 4\n2 3 2 1 2 5 6 7 8\n"
+        "3 3 2 1 2 8 7 9 10\n4 1 2 7 11 1 2\n5 1 2 7 12 5 6\n$EndElements\n");
+}
