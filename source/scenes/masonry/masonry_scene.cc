@@ -530,9 +530,13 @@ namespace unilateral::masonry
         << quantity(s.n_cells, "cell") << " (refinement "
         << parameters.geometry.refinement << ", h = " << s.cell_size << ")\n"
         << "  supports: " << quantity(s.n_dirichlet, "Dirichlet DOF") << ", "
-        << quantity(s.n_signorini, "Signorini node")
-        << " with gap g = " << s.gap << "; joints: " << s.n_horizontal_joint
-        << " horizontal + "
+        << quantity(s.n_signorini, "Signorini node") << " with gap ";
+    const std::string gap = dealii::Utilities::trim(parameters.boundary.gap);
+    if (gap == "g")
+      out << "g = " << s.gap;
+    else
+      out << gap << " (g = " << s.gap << ")";
+    out << "; joints: " << s.n_horizontal_joint << " horizontal + "
         << quantity(s.n_vertical_joint, "vertical node pair");
     if (s.n_inclined_joint > 0)
       out << " + " << s.n_inclined_joint << " inclined";
