@@ -112,6 +112,11 @@ namespace unilateral::lcp
                          std::to_string(attempt.parameters.max_dense_size) +
                          ": use 'Schur complement = true' (" + info.name +
                          " works on S only) or a sparse method");
+      if (info.needs_tearing && problem.tearing == nullptr)
+        throw InputError("method '" + info.name +
+                         "' works on a problem torn into subdomains, which "
+                         "this scene does not build (the masonry scene "
+                         "does): choose another method");
       PhaseTimer timer(report, "solve");
       info.create(attempt.parameters, attempt.parameters.of(info.name))
         ->solve(problem, solution, report, progress);

@@ -112,6 +112,81 @@ namespace unilateral::masonry
     }
   } // namespace
 
+  CellSystem::CellSystem(const Discretisation &discretisation,
+                         const LoadData       &loads)
+    : loads(loads)
+    , fe_values(*discretisation.mapping,
+                *discretisation.fe,
+                *discretisation.quadrature,
+                dealii::update_values | dealii::update_gradients |
+                  dealii::update_JxW_values)
+    , fe_face_values(*discretisation.mapping,
+                     *discretisation.fe,
+                     *discretisation.face_quadrature,
+                     dealii::update_values | dealii::update_JxW_values)
+    , dofs_per_cell(discretisation.fe->n_dofs_per_cell())
+    , component(dofs_per_cell)
+    , matrix(dofs_per_cell * dofs_per_cell)
+    , rhs(dofs_per_cell)
+  {
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      component[i] = discretisation.fe->system_to_component_index(i).first;
+  }
+
+  void
+  CellSystem::reinit(const dealii::DoFHandler<2>::active_cell_iterator &cell)
+  {
+    fe_values.reinit(cell);
+    const MaterialClass &material =
+      loads.classes[loads.class_of_block[cell->material_id()]];
+    const double lambda       = material.lambda();
+    const double mu           = material.mu();
+    const double body_force_y = -material.density * loads.gravity;
+
+    // Plane strain elasticity, as in step-8.
+    std::fill(matrix.begin(), matrix.end(), 0.0);
+    std::fill(rhs.begin(), rhs.end(), 0.0);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int          ci = component[i];
+            const dealii::Tensor<1, 2> &gi = fe_values.shape_grad(i, q);
+            for (unsigned int j = i; j < dofs_per_cell; ++j)
+              {
+                const unsigned int          cj = component[j];
+                const dealii::Tensor<1, 2> &gj = fe_values.shape_grad(j, q);
+                double value = gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
+                if (ci == cj)
+                  value += (gi * gj) * mu;
+                matrix[i * dofs_per_cell + j] += value * JxW;
+              }
+            if (ci == 1)
+              rhs[i] += fe_values.shape_value(i, q) * body_force_y * JxW;
+          }
+      }
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        matrix[i * dofs_per_cell + j] = matrix[j * dofs_per_cell + i];
+
+    if (loads.top_traction[0] == 0 && loads.top_traction[1] == 0)
+      return;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() &&
+          std::abs(cell->face(f)->center()[1] - loads.y_top) <=
+            loads.tolerance &&
+          cell->face(f)->center()[1] > cell->center()[1])
+        {
+          fe_face_values.reinit(cell, f);
+          for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              rhs[i] += fe_face_values.shape_value(i, q) *
+                        loads.top_traction[component[i]] *
+                        fe_face_values.JxW(q);
+        }
+  }
+
   lcp::Problem
   assemble_lcp(const Discretisation    &discretisation,
                const ChangeOfVariables &change,
@@ -131,28 +206,10 @@ namespace unilateral::masonry
     collect_cell_variables(dof_handler, change, cell_start, cell_variables);
     make_pattern(n, cell_start, cell_variables, problem.A);
 
-    dealii::FEValues<2>     fe_values(*discretisation.mapping,
-                                  fe,
-                                  *discretisation.quadrature,
-                                  dealii::update_values |
-                                    dealii::update_gradients |
-                                    dealii::update_JxW_values);
-    dealii::FEFaceValues<2> fe_face_values(*discretisation.mapping,
-                                           fe,
-                                           *discretisation.face_quadrature,
-                                           dealii::update_values |
-                                             dealii::update_JxW_values);
-    const unsigned int      n_q_points = discretisation.quadrature->size();
-    const bool              loaded_top =
-      loads.top_traction[0] != 0 || loads.top_traction[1] != 0;
-
-    std::vector<unsigned int> component(dofs_per_cell);
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      component[i] = fe.system_to_component_index(i).first;
-
     std::vector<dealii::types::global_dof_index> dofs(dofs_per_cell);
-    std::vector<double> cell_matrix(dofs_per_cell * dofs_per_cell);
-    std::vector<double> cell_rhs(dofs_per_cell);
+    CellSystem                 cell_system(discretisation, loads);
+    const std::vector<double> &cell_matrix = cell_system.matrix;
+    const std::vector<double> &cell_rhs    = cell_system.rhs;
     std::vector<int>    position(n, -1); // variable -> index in the cell list
     std::vector<double> reduced_matrix, reduced_rhs;
     struct LocalTerm
@@ -169,59 +226,8 @@ namespace unilateral::masonry
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        fe_values.reinit(cell);
         cell->get_dof_indices(dofs);
-        const MaterialClass &material =
-          loads.classes[loads.class_of_block[cell->material_id()]];
-        const double lambda       = material.lambda();
-        const double mu           = material.mu();
-        const double body_force_y = -material.density * loads.gravity;
-
-        // Plane strain elasticity, as in step-8.
-        std::fill(cell_matrix.begin(), cell_matrix.end(), 0.0);
-        std::fill(cell_rhs.begin(), cell_rhs.end(), 0.0);
-        for (unsigned int q = 0; q < n_q_points; ++q)
-          {
-            const double JxW = fe_values.JxW(q);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const unsigned int          ci = component[i];
-                const dealii::Tensor<1, 2> &gi = fe_values.shape_grad(i, q);
-                for (unsigned int j = i; j < dofs_per_cell; ++j)
-                  {
-                    const unsigned int          cj = component[j];
-                    const dealii::Tensor<1, 2> &gj = fe_values.shape_grad(j, q);
-                    double                      value =
-                      gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
-                    if (ci == cj)
-                      value += (gi * gj) * mu;
-                    cell_matrix[i * dofs_per_cell + j] += value * JxW;
-                  }
-                if (ci == 1)
-                  cell_rhs[i] +=
-                    fe_values.shape_value(i, q) * body_force_y * JxW;
-              }
-          }
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = 0; j < i; ++j)
-            cell_matrix[i * dofs_per_cell + j] =
-              cell_matrix[j * dofs_per_cell + i];
-
-        if (loaded_top)
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                std::abs(cell->face(f)->center()[1] - loads.y_top) <=
-                  loads.tolerance &&
-                cell->face(f)->center()[1] > cell->center()[1])
-              {
-                fe_face_values.reinit(cell, f);
-                for (unsigned int q = 0; q < fe_face_values.n_quadrature_points;
-                     ++q)
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    cell_rhs[i] += fe_face_values.shape_value(i, q) *
-                                   loads.top_traction[component[i]] *
-                                   fe_face_values.JxW(q);
-              }
+        cell_system.reinit(cell);
 
         // Expand into the new variables: u_i = sum_t c_t u~_{v_t}, so the
         // local contribution to A~ is sum_ij K_ij c_a c_b at (v_a, v_b).

@@ -2,6 +2,7 @@
 #include <unilateral/base/text.h>
 #include <unilateral/scenes/masonry/assembly.h>
 #include <unilateral/scenes/masonry/mesh.h>
+#include <unilateral/scenes/masonry/tearing.h>
 
 #include "scene_state.h"
 
@@ -191,6 +192,16 @@ namespace unilateral::masonry
       }
     else
       unit = 1;
+
+    // The wall torn into its blocks, for a method that works on them.
+    if (lcp::SolverRegistry::get(context.solver.method).needs_tearing)
+      lcp_problem.tearing = tear_into_blocks(state->discretisation,
+                                             state->contacts,
+                                             *state->change,
+                                             loads,
+                                             problem_sizes.n_blocks,
+                                             unit,
+                                             coincidence_tolerance());
   }
 
   // u = C~^-1 u~, and for every constraint its normal gap (the gap variable,

@@ -6,6 +6,8 @@
 #include <unilateral/scenes/masonry/discretisation.h>
 #include <unilateral/scenes/masonry/parameters.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <vector>
 
 namespace unilateral::masonry
@@ -20,6 +22,34 @@ namespace unilateral::masonry
     /// The top y = y_top carries the traction; faces within tolerance.
     double y_top     = 1;
     double tolerance = 0;
+  };
+
+  /**
+   * The plane strain stiffness (step-8) and the load (body force, top
+   * traction) of one cell in its physical DOFs, deal.II's local numbering:
+   * what the LCP's assembly expands into the new variables and the tearing
+   * (tearing.h) sums per block.
+   */
+  class CellSystem
+  {
+  public:
+    CellSystem(const Discretisation &discretisation, const LoadData &loads);
+
+    /// matrix and rhs of @p cell.
+    void
+    reinit(const dealii::DoFHandler<2>::active_cell_iterator &cell);
+
+  private:
+    const LoadData           &loads;
+    dealii::FEValues<2>       fe_values;
+    dealii::FEFaceValues<2>   fe_face_values;
+    const unsigned int        dofs_per_cell;
+    std::vector<unsigned int> component;
+
+  public:
+    /// Row-major, dofs_per_cell^2.
+    std::vector<double> matrix;
+    std::vector<double> rhs;
   };
 
   /**
