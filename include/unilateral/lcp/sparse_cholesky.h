@@ -18,6 +18,13 @@ namespace unilateral::lcp
    * Matrices are given with both triangles stored; CHOLMOD reads the upper
    * one. factorise() counts its work in the Counters it is given; solves are
    * counted by the caller (a factor may be shared with a later solve).
+   *
+   * Why CHOLMOD's C API and not a deal.II wrapper (SparseDirectUMFPACK, the
+   * Trilinos or PETSc direct solvers): the active-set methods need what
+   * only CHOLMOD's own API offers, a symbolic analysis kept across numeric
+   * factorisations of one pattern, row deletions and additions of an
+   * existing factor (rowdel/rowadd), and partial forward solves along the
+   * elimination tree (inverse_gram); the wrappers factorise from scratch.
    */
   class SparseCholesky
   {

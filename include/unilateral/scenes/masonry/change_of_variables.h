@@ -26,6 +26,12 @@
  *    the path from the root, a list of a few (variable, +-1) terms per DOF.
  * The assembly expands every local physical DOF into these terms, which gives
  * A~ = C~^-T A C~^-1 and b~ = C~^-T b cell by cell, with no global product.
+ *
+ * Why not deal.II's AffineConstraints, which expands DOFs cell by cell in
+ * the same way: a constraint there removes a DOF, writing it in terms of
+ * the others; here a DOF is replaced by a new unknown of its own, the gap,
+ * which stays in the problem and carries the bound. AffineConstraints has
+ * no place for such a substitution, so the expansion lists are ours.
  */
 namespace unilateral::masonry
 {
