@@ -221,10 +221,14 @@ namespace unilateral::lcp
         regularise ?
           report.regularisation :
           1e3 * std::max(attempt.auto_regularisation, 1e-12) * mean_diagonal;
+      const FirstActiveSet first_active_set =
+        info.gives_active_set      ? FirstActiveSet::given :
+        !regularise && !info.exact ? FirstActiveSet::interior_point :
+                                     FirstActiveSet::test_on_u;
       project(problem,
               parameters,
               first_eps,
-              !regularise && !info.exact,
+              first_active_set,
               solution,
               report,
               progress);

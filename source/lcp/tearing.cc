@@ -1,5 +1,6 @@
 #include <unilateral/lcp/tearing.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,13 @@ namespace unilateral::lcp
     for (const Group &group : groups)
       n += group.n_subdomains;
     return n;
+  }
+
+  std::string
+  Tearing::describe(const Index subdomain) const
+  {
+    return describe_subdomain ? describe_subdomain(subdomain) :
+                                "subdomain " + std::to_string(subdomain);
   }
 
   void
@@ -27,9 +35,9 @@ namespace unilateral::lcp
           fail("a group names shape " + std::to_string(group.shape));
         if (group.first_dof != next_dof)
           fail("the groups do not cover the DOFs in order");
-        next_dof += group.n_subdomains * static_cast<Index>(
-                                           tearing.shapes[group.shape]
-                                             .stiffness.rows());
+        next_dof +=
+          group.n_subdomains *
+          static_cast<Index>(tearing.shapes[group.shape].stiffness.rows());
       }
     if (next_dof != tearing.n_dofs())
       fail("the groups cover " + std::to_string(next_dof) + " of " +
@@ -49,6 +57,14 @@ namespace unilateral::lcp
         tearing.c.size() != tearing.B.rows() ||
         tearing.n_inequalities > tearing.B.rows())
       fail("B and c do not match the DOFs");
+    if (tearing.inequality_unknown.size() !=
+        static_cast<std::size_t>(tearing.n_inequalities))
+      fail("not every inequality names its unknown");
+    for (const Index i : tearing.inequality_unknown)
+      if (!std::binary_search(problem.constrained.begin(),
+                              problem.constrained.end(),
+                              i))
+        fail("an inequality names an unconstrained unknown");
     if (tearing.to_problem.rows() != problem.size() ||
         tearing.to_problem.cols() != tearing.n_dofs())
       fail("the map to the problem's unknowns has the wrong shape");

@@ -2,6 +2,8 @@
 
 #include <unilateral/lcp/problem.h>
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace unilateral::lcp
@@ -62,6 +64,18 @@ namespace unilateral::lcp
     Index        n_inequalities = 0;
     /// u = to_problem x: the Problem's unknowns from the physical DOFs.
     SparseMatrix to_problem;
+    /// For each inequality, the Problem's constrained unknown it bounds:
+    /// its multiplier is that unknown's lambda (contact force), positive
+    /// where the contact closes.
+    std::vector<Index> inequality_unknown;
+
+    /// Subdomain k (counted through the groups) in the scene's words, for
+    /// messages ("block 7 with lower left corner (0.1, 0.2)"); unset:
+    /// "subdomain k".
+    std::function<std::string(Index)> describe_subdomain;
+
+    std::string
+    describe(Index subdomain) const;
 
     /// The number of physical DOFs.
     Index

@@ -1,41 +1,44 @@
 /**
  * Total FETI (Dostal, Horak & Kucera, "Total FETI - an easier implementable
  * variant of the FETI method for numerical solution of elliptic PDE",
- * Commun. Numer. Meth. Engng 22 (2006) 1155-1162), with SMALBE and MPRGP
+ * Commun. Numer. Meth. Engng 22 (2006) 1155-1162), with SMALBE-M and MPRGP
  * for contact (Dostal, "Optimal Quadratic Programming Algorithms", 2009,
- * ch. 6 and 9; PERMON's PermonQP is the public implementation it was read
- * against). It solves the problem torn into floating subdomains
+ * ch. 5 and 6; PERMON's PermonQP, QPSSMALXE, is the public implementation
+ * it was read against). It solves the problem torn into floating subdomains
  * (lcp/tearing.h),
  *     min 1/2 x^T K x - f^T x,  B_I x <= c_I,  B_E x = c_E,
  * through its dual: with K^+ a generalised inverse of K, R the rigid
  * motions, F = B K^+ B^T, G = R^T B^T, d = B K^+ f - c, e = R^T f,
  *     min 1/2 l^T F l - l^T d   subject to  l_I >= 0,  G l = e.
  * Steps:
- *  1. K_s^+ = (K_s + s R_s R_s^T)^-1 - R_s R_s^T / s per shape (R_s made
- *     orthonormal; s its mean diagonal), the coarse matrix G G^T factorised
- *     (singular: a subdomain that nothing holds, refused);
+ *  1. K_s^+ and G G^T, factorised (dual_operators.h: singular when a
+ *     subdomain is held by nothing, refused);
  *  2. homogenisation: l = l0 + m with l0 = G^T (G G^T)^-1 e, so G m = 0 and
  *     the bounds of m are -l0_I;
- *  3. SMALBE on G m = 0 (Q = G^T (G G^T)^-1 G, P = I - Q): minimise
- *     1/2 m^T (P F P + rho Q) m - m^T (P (d - F l0) - q) over the bounds by
- *     MPRGP (lcp/mprgp.h) to the precision min(M |Q m|, eta), then
- *     q += rho Q m; rho doubles when |Q m| does not halve;
+ *  3. SMALBE-M on G m = 0 (Q = G^T (G G^T)^-1 G, P = I - Q, so ||Q m|| is
+ *     ||G m|| in orthonormalised rows): with the multiplier q (= G^T mu),
+ *     MPRGP minimises the augmented Lagrangian
+ *       1/2 m^T (P F P + rho Q) m - m^T (P (d - F l0) - q)
+ *     over the bounds until ||g^P|| <= min(M ||Q m||, eta) or the whole
+ *     problem has converged; then q += rho Q m, and where the Lagrangian
+ *     did not rise by rho/2 ||Q m||^2, M /= beta (SMALBE-M); rho grows by
+ *     'Penalty growth' where ||Q m|| did not halve;
  *  4. the rigid motions alpha = (G G^T)^-1 G (F l - d - g), g the final
  *     gradient of step 3 (the bounds' multipliers: no active set needed),
- *     and x = K^+ (f - B^T l) + R alpha, the Problem's u = to_problem x.
+ *     and x = K^+ (f - B^T l) + R alpha, the Problem's u = to_problem x,
+ *     with the active set of the contacts whose multipliers are positive.
  * The answer is approximate (the dual's tolerance); the projection step
- * makes it exact on the Problem.
+ * makes it exact on the Problem, starting from that active set.
  */
 #include <unilateral/base/input_error.h>
+#include <unilateral/lcp/dual_operators.h>
 #include <unilateral/lcp/mprgp.h>
 #include <unilateral/lcp/solver.h>
-#include <unilateral/lcp/sparse_cholesky.h>
 #include <unilateral/lcp/tearing.h>
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <Eigen/Dense>
-
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -49,243 +52,264 @@ namespace unilateral::lcp
     class TfetiParameters : public MethodParametersBase<TfetiParameters>
     {
     public:
-      /// On ||g^P|| and ||G l - e||, relative to ||d||.
+      /// On ||g^P|| and ||P F P|| ||Q m||, relative to ||P (d - F l0)||.
       double tolerance = 1e-8;
       /// rho / ||P F P|| at the start.
-      double penalty = 1;
-      /// M of SMALBE's inner precision min(M ||Q m||, eta).
-      double precision_factor = 1;
-      /// Outer (SMALBE) iterations.
-      unsigned int max_outer = 100;
+      double penalty = 10;
+      /// Factor of rho where ||Q m|| fails to halve (1: rho fixed).
+      double penalty_growth = 2;
+      /// M / ||P F P|| at the start (SMALBE's inner precision).
+      double precision = 1;
+      /// beta: M /= beta where the Lagrangian does not rise enough.
+      double precision_update = 2;
+      /// eta / ||P (d - F l0)||: the coarsest inner precision.
+      double eta = 0.1;
+      /// alpha_bar ||H|| of MPRGP's expansion steps.
+      double       step_length = 1.9;
+      unsigned int max_outer   = 200;
 
       void
-      add_parameters(dealii::ParameterHandler &prm) override
-      {
-        using namespace dealii::Patterns;
-        prm.add_parameter("Tolerance",
-                          tolerance,
-                          "Stop when the projected gradient of the dual and "
-                          "the violation of its equality G l = e are at most "
-                          "this times ||d||. The projection step then makes "
-                          "the answer exact.",
-                          Double(0));
-        prm.add_parameter("Penalty",
-                          penalty,
-                          "SMALBE's penalty rho at the start, relative to the "
-                          "largest eigenvalue of P F P (estimated); it doubles "
-                          "whenever the violation of G l = e fails to halve.",
-                          Double(0));
-        prm.add_parameter("Inner precision",
-                          precision_factor,
-                          "M of SMALBE: an inner (MPRGP) solve stops at a "
-                          "projected gradient of M times the violation of "
-                          "G l = e (or the final tolerance).",
-                          Double(0));
-        prm.add_parameter("Maximum outer iterations",
-                          max_outer,
-                          "SMALBE's iterations (updates of the equality "
-                          "multiplier); 'Maximum iterations' bounds the "
-                          "products with F.",
-                          Integer(1));
-      }
+      add_parameters(dealii::ParameterHandler &prm) override;
 
       void
       check(const std::string &section) const override
       {
-        check_parameter(penalty > 0, section, "Penalty", penalty, "must be > 0");
-        check_parameter(precision_factor > 0,
+        check_parameter(
+          penalty > 0, section, "Penalty", penalty, "must be > 0");
+        check_parameter(
+          precision > 0, section, "Inner precision", precision, "must be > 0");
+        check_parameter(eta > 0, section, "Eta", eta, "must be > 0");
+        check_parameter(step_length > 0,
                         section,
-                        "Inner precision",
-                        precision_factor,
-                        "must be > 0");
+                        "Step length",
+                        step_length,
+                        "must be in (0, 2]");
       }
     };
+
+    void
+    TfetiParameters::add_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.add_parameter("Tolerance",
+                        tolerance,
+                        "Stop when the projected gradient of the dual and its "
+                        "violation of G l = e (times ||P F P||) are at most "
+                        "this times ||P (d - F l0)||. The projection step "
+                        "then makes the answer exact.",
+                        Double(0));
+      prm.add_parameter("Penalty",
+                        penalty,
+                        "SMALBE's penalty rho at the start, relative to the "
+                        "largest eigenvalue of P F P (estimated).",
+                        Double(0));
+      prm.add_parameter("Penalty growth",
+                        penalty_growth,
+                        "rho is multiplied by this whenever the violation of "
+                        "G l = e fails to halve in an outer iteration; 1 "
+                        "keeps it fixed (SMALBE-M).",
+                        Double(1));
+      prm.add_parameter("Inner precision",
+                        precision,
+                        "M of SMALBE-M at the start, relative to the largest "
+                        "eigenvalue of P F P: an inner (MPRGP) solve stops at "
+                        "a projected gradient of min(M ||Q l||, eta).",
+                        Double(0));
+      prm.add_parameter("Precision update",
+                        precision_update,
+                        "beta of SMALBE-M: M is divided by it whenever the "
+                        "augmented Lagrangian fails to rise by rho/2 "
+                        "||Q l||^2 in an outer iteration.",
+                        Double(1));
+      prm.add_parameter("Eta",
+                        eta,
+                        "The coarsest inner precision, relative to "
+                        "||P (d - F l0)||.",
+                        Double(0));
+      prm.add_parameter("Step length",
+                        step_length,
+                        "alpha_bar ||H|| of MPRGP's expansion steps, in "
+                        "(0, 2]; ||H|| = max(||P F P||, rho).",
+                        Double(0, 2));
+      prm.add_parameter("Maximum outer iterations",
+                        max_outer,
+                        "SMALBE's iterations (updates of the equality "
+                        "multiplier); 'Maximum iterations' bounds the "
+                        "products with F.",
+                        Integer(1));
+    }
+
+    /// The homogenised dual: min 1/2 m^T P F P m - b^T m over m >= lower,
+    /// G m = 0.
+    struct HomogenisedDual
+    {
+      /// l0 = G^T (G G^T)^-1 e.
+      Vector l0;
+      /// d = B K^+ f - c.
+      Vector d;
+      /// b = P (d - F l0).
+      Vector b;
+      /// -l0 on the inequalities, -infinity on the equalities.
+      Vector lower;
+      /// ||b||, or 1 if b = 0: what the tolerances are relative to.
+      double scale = 1;
+    };
+
+    HomogenisedDual
+    homogenise(const DualOperators &dual)
+    {
+      const Tearing  &tearing = dual.tearing();
+      HomogenisedDual h;
+      h.l0 = dual.G().transpose() *
+             dual.coarse_solve(dual.apply_rigid_motions_transposed(tearing.f));
+      h.d     = tearing.B * dual.apply_pseudo_inverse(tearing.f) - tearing.c;
+      h.b     = dual.apply_P(h.d - dual.apply_F(h.l0));
+      h.lower = Vector::Constant(tearing.n_multipliers(),
+                                 -std::numeric_limits<double>::infinity());
+      h.lower.head(tearing.n_inequalities) = -h.l0.head(tearing.n_inequalities);
+      h.scale                              = h.b.norm() > 0 ? h.b.norm() : 1.0;
+      return h;
+    }
+
+    // The largest eigenvalue of P F P, by power iteration (an estimate from
+    // below, raised by a tenth for MPRGP's step length).
+    double
+    largest_eigenvalue(const DualOperators &dual)
+    {
+      Vector x        = dual.apply_P(Vector::Ones(dual.n_multipliers()));
+      double estimate = 0;
+      for (unsigned int k = 0; k < 30 && x.norm() > 0; ++k)
+        {
+          x /= x.norm();
+          const Vector y = dual.apply_P(dual.apply_F(dual.apply_P(x)));
+          estimate       = x.dot(y);
+          x              = y;
+        }
+      return 1.1 * estimate;
+    }
 
     /**
-     * The operators of the dual: K^+ and R by shape, B, G = R^T B^T and the
-     * factorised coarse matrix G G^T, and the projector P = I - Q.
+     * SMALBE-M with MPRGP on the homogenised dual (step 3): its state and
+     * its loop.
      */
-    class DualOperators
+    class Smalbe
     {
     public:
-      explicit DualOperators(const Tearing &tearing, Counters &counters)
-        : tearing(tearing)
-        , counters(counters)
-      {
-        pseudo_inverses();
-        coarse_space();
-      }
+      Smalbe(const DualOperators   &dual,
+             const HomogenisedDual &problem,
+             const TfetiParameters &options)
+        : m(Vector::Zero(dual.n_multipliers()))
+        , dual(dual)
+        , problem(problem)
+        , options(options)
+        , norm_pfp(largest_eigenvalue(dual))
+        , rho(options.penalty * norm_pfp)
+        , M(options.precision * norm_pfp)
+        , q(Vector::Zero(dual.n_multipliers()))
+      {}
 
-      /// False if G G^T is singular (a subdomain nothing holds).
-      bool
-      coarse_ok() const
+      enum class Outcome
       {
-        return coarse_factorised;
-      }
+        converged,
+        outer_limit,
+        product_limit,
+        broke_down
+      };
 
-      /// y = K^+ x, one product of matrices per group.
-      Vector
-      apply_pseudo_inverse(const Vector &x) const
-      {
-        Vector y(x.size());
-        for (const Tearing::Group &group : tearing.groups)
-          {
-            const DenseMatrix &Kplus = pseudo_inverse[group.shape];
-            const Index        n     = static_cast<Index>(Kplus.rows());
-            const Eigen::Map<const DenseMatrix> X(x.data() + group.first_dof,
-                                                  n,
-                                                  group.n_subdomains);
-            Eigen::Map<DenseMatrix>             Y(y.data() + group.first_dof,
-                                      n,
-                                      group.n_subdomains);
-            Y.noalias() = Kplus * X;
-          }
-        return y;
-      }
+      /// The outer loop, within @p max_products products with F.
+      Outcome
+      run(unsigned int max_products, std::ostream *progress);
 
-      /// x = R alpha.
-      Vector
-      apply_rigid_motions(const Vector &alpha) const
-      {
-        Vector x(tearing.n_dofs());
-        Index  coarse = 0;
-        for (const Tearing::Group &group : tearing.groups)
-          {
-            const DenseMatrix &R = rigid[group.shape];
-            Eigen::Map<DenseMatrix> X(x.data() + group.first_dof,
-                                      R.rows(),
-                                      group.n_subdomains);
-            const Eigen::Map<const DenseMatrix> A(alpha.data() + coarse,
-                                                  R.cols(),
-                                                  group.n_subdomains);
-            X.noalias() = R * A;
-            coarse += static_cast<Index>(R.cols()) * group.n_subdomains;
-          }
-        return x;
-      }
-
-      /// R^T x.
-      Vector
-      apply_rigid_motions_transposed(const Vector &x) const
-      {
-        Vector alpha(n_coarse);
-        Index  coarse = 0;
-        for (const Tearing::Group &group : tearing.groups)
-          {
-            const DenseMatrix &R = rigid[group.shape];
-            const Eigen::Map<const DenseMatrix> X(x.data() + group.first_dof,
-                                                  R.rows(),
-                                                  group.n_subdomains);
-            Eigen::Map<DenseMatrix> A(alpha.data() + coarse,
-                                      R.cols(),
-                                      group.n_subdomains);
-            A.noalias() = R.transpose() * X;
-            coarse += static_cast<Index>(R.cols()) * group.n_subdomains;
-          }
-        return alpha;
-      }
-
-      /// F l = B K^+ B^T l.
-      Vector
-      apply_F(const Vector &l) const
-      {
-        ++products_with_F;
-        ++counters.matrix_vector_products;
-        return tearing.B * apply_pseudo_inverse(tearing.B.transpose() * l);
-      }
-
-      /// (G G^T)^-1 v.
-      Vector
-      coarse_solve(const Vector &v) const
-      {
-        Vector y;
-        coarse.solve(v, y);
-        ++counters.triangular_solves;
-        return y;
-      }
-
-      /// P l = l - G^T (G G^T)^-1 G l.
-      Vector
-      apply_P(const Vector &l) const
-      {
-        return l - G.transpose() * coarse_solve(G * l);
-      }
-
-      SparseMatrix       G;
-      Index              n_coarse = 0;
-      mutable unsigned int products_with_F = 0;
+      /// m, and the gradient of the last inner functional at it.
+      Vector       m;
+      Vector       gradient;
+      unsigned int outer = 0, inner = 0;
 
     private:
-      // K_s^+ = (K_s + s R R^T)^-1 - R R^T / s with R orthonormal.
-      void
-      pseudo_inverses()
+      /// ||P F P|| ||Q m|| and ||g^P||, relative to the scale.
+      bool
+      converged(double projected_gradient, double violation) const
       {
-        for (const Tearing::Shape &shape : tearing.shapes)
-          {
-            const DenseMatrix R =
-              Eigen::HouseholderQR<DenseMatrix>(shape.rigid_motions)
-                .householderQ() *
-              DenseMatrix::Identity(shape.rigid_motions.rows(),
-                                    shape.rigid_motions.cols());
-            const double s   = shape.stiffness.diagonal().mean();
-            const DenseMatrix RRt = R * R.transpose();
-            const DenseMatrix regular = shape.stiffness + s * RRt;
-            pseudo_inverse.push_back(
-              regular.llt().solve(DenseMatrix::Identity(regular.rows(),
-                                                        regular.cols())) -
-              RRt / s);
-            rigid.push_back(R);
-          }
+        return projected_gradient <= options.tolerance * problem.scale &&
+               norm_pfp * violation <= options.tolerance * problem.scale;
       }
 
-      // G = R^T B^T (as (B R)^T) and G G^T, factorised.
-      void
-      coarse_space()
-      {
-        std::vector<Index> coarse_of_dof(tearing.n_dofs());
-        std::vector<Index> local_of_dof(tearing.n_dofs());
-        std::vector<const DenseMatrix *> rigid_of_dof(tearing.n_dofs());
-        for (const Tearing::Group &group : tearing.groups)
-          {
-            const DenseMatrix &R = rigid[group.shape];
-            const Index        n = static_cast<Index>(R.rows());
-            for (Index k = 0; k < group.n_subdomains; ++k)
-              {
-                for (Index j = 0; j < n; ++j)
-                  {
-                    const Index dof     = group.first_dof + k * n + j;
-                    coarse_of_dof[dof]  = n_coarse;
-                    local_of_dof[dof]   = j;
-                    rigid_of_dof[dof]   = &R;
-                  }
-                n_coarse += static_cast<Index>(R.cols());
-              }
-          }
-        std::vector<Eigen::Triplet<double, Index>> entries;
-        for (Index dof = 0; dof < tearing.B.outerSize(); ++dof)
-          for (SparseMatrix::InnerIterator it(tearing.B, dof); it; ++it)
-            {
-              const DenseMatrix &R = *rigid_of_dof[dof];
-              for (Index a = 0; a < R.cols(); ++a)
-                entries.emplace_back(coarse_of_dof[dof] + a,
-                                     it.row(),
-                                     it.value() * R(local_of_dof[dof], a));
-            }
-        G.resize(n_coarse, tearing.n_multipliers());
-        G.setFromTriplets(entries.begin(), entries.end());
-        G.makeCompressed();
-        SparseMatrix GGt = G * SparseMatrix(G.transpose());
-        GGt.makeCompressed();
-        coarse.minimum_rcond = 1e-14;
-        coarse_factorised    = coarse.factorise(GGt, counters);
-      }
-
-      const Tearing           &tearing;
-      Counters                &counters;
-      std::vector<DenseMatrix> pseudo_inverse, rigid;
-      SparseCholesky           coarse;
-      bool                     coarse_factorised = false;
+      const DualOperators   &dual;
+      const HomogenisedDual &problem;
+      const TfetiParameters &options;
+      const double           norm_pfp;
+      double                 rho, M;
+      /// The equality multiplier, as G^T mu.
+      Vector q;
     };
+
+    Smalbe::Outcome
+    Smalbe::run(const unsigned int max_products, std::ostream *progress)
+    {
+      const unsigned int first_product = dual.products_with_F();
+      double previous_lagrangian = -std::numeric_limits<double>::infinity();
+      double previous_violation  = std::numeric_limits<double>::infinity();
+      for (outer = 0; outer < options.max_outer; ++outer)
+        {
+          const Vector r = problem.b - q;
+          Mprgp        mprgp([&](const Vector &x,
+                          Vector &y) { y = dual.apply_penalised(x, rho); },
+                      r,
+                      problem.lower,
+                      options.step_length / std::max(norm_pfp, rho),
+                      1.0);
+          // The inner precision, against the current violation ||Q m|| (m
+          // is MPRGP's iterate); the whole problem converged stops too.
+          bool       by_precision = false;
+          double     violation    = 0;
+          const auto stop         = [&](const double projected_gradient) {
+            violation = dual.norm_of_Q(m);
+            if (converged(projected_gradient, violation))
+              return true;
+            by_precision = projected_gradient <=
+                           std::min(M * violation, options.eta * problem.scale);
+            return by_precision;
+          };
+          const unsigned int   used = dual.products_with_F() - first_product;
+          const Mprgp::Outcome outcome =
+            mprgp.solve(m, stop, used < max_products ? max_products - used : 0);
+          gradient = mprgp.gradient();
+          inner += mprgp.steps();
+          if (outcome == Mprgp::Outcome::not_definite ||
+              outcome == Mprgp::Outcome::diverged)
+            return Outcome::broke_down;
+          const double projected = mprgp.projected_gradient(m).norm();
+          if (progress != nullptr)
+            *progress << "    tfeti outer iteration " << outer + 1
+                      << std::scientific << std::setprecision(2)
+                      << ": projected gradient " << projected / problem.scale
+                      << ", violation " << norm_pfp * violation / problem.scale
+                      << ", " << mprgp.steps() << " inner iterations, rho "
+                      << rho / norm_pfp << ", M " << M / norm_pfp
+                      << std::defaultfloat << std::endl;
+          if (converged(projected, violation))
+            {
+              ++outer;
+              return Outcome::converged;
+            }
+          if (outcome == Mprgp::Outcome::iteration_limit)
+            return Outcome::product_limit;
+
+          // SMALBE-M: the Lagrangian of this inner solve, 1/2 m^T (g - r),
+          // must rise by rho/2 ||Q m||^2 over the last one; where it does
+          // not, the inner solves were too coarse, and M shrinks.
+          const double lagrangian = 0.5 * m.dot(gradient - r);
+          if (by_precision && lagrangian < previous_lagrangian +
+                                             0.5 * rho * violation * violation)
+            M /= options.precision_update;
+          previous_lagrangian = lagrangian;
+          q += rho * dual.apply_Q(m);
+          if (violation > 0.5 * previous_violation)
+            rho *= options.penalty_growth;
+          previous_violation = violation;
+        }
+      return Outcome::outer_limit;
+    }
 
     class Tfeti : public Solver
     {
@@ -301,16 +325,17 @@ namespace unilateral::lcp
       properties()
       {
         SolverInfo info;
-        info.name        = "tfeti";
-        info.label       = "TFETI";
-        info.description = "total FETI (Dostal et al.): the dual of the "
-                           "problem torn into floating subdomains, by SMALBE "
-                           "and MPRGP; needs a scene that tears its problem "
-                           "(masonry)";
+        info.name               = "tfeti";
+        info.label              = "TFETI";
+        info.description        = "total FETI (Dostal et al.): the dual of the "
+                                  "problem torn into floating subdomains, by SMALBE "
+                                  "and MPRGP; needs a scene that tears its problem "
+                                  "(masonry)";
         info.subsection         = "TFETI";
         info.default_iterations = "100000 products with F";
         info.exact              = false;
         info.needs_tearing      = true;
+        info.gives_active_set   = true;
         return info;
       }
 
@@ -324,21 +349,30 @@ namespace unilateral::lcp
       const Parameters options;
     };
 
-    // The largest eigenvalue of P F P, by power iteration (an estimate from
-    // below, raised by a tenth for MPRGP's step length).
-    double
-    largest_eigenvalue(const DualOperators &dual, const Index n)
+    // Step 4: x = K^+ (f - B^T l) + R alpha with the rigid motions alpha
+    // from the final gradient, u = to_problem x, and the active set of the
+    // positive multipliers.
+    void
+    primal_answer(const DualOperators   &dual,
+                  const HomogenisedDual &homogenised,
+                  const Smalbe          &smalbe,
+                  Solution              &solution)
     {
-      Vector x = dual.apply_P(Vector::Ones(n));
-      double estimate = 0;
-      for (unsigned int k = 0; k < 30 && x.norm() > 0; ++k)
-        {
-          x /= x.norm();
-          const Vector y = dual.apply_P(dual.apply_F(dual.apply_P(x)));
-          estimate       = x.dot(y);
-          x              = y;
-        }
-      return 1.1 * estimate;
+      const Tearing &tearing = dual.tearing();
+      const Vector   l       = homogenised.l0 + smalbe.m;
+      const Vector   alpha   = dual.coarse_solve(
+        dual.G() * (dual.apply_F(l) - homogenised.d - smalbe.gradient));
+      const Vector x =
+        dual.apply_pseudo_inverse(tearing.f - tearing.B.transpose() * l) +
+        dual.apply_rigid_motions(alpha);
+      solution.u = tearing.to_problem * x;
+      // MPRGP leaves the multipliers of open contacts exactly at their
+      // bounds.
+      solution.active_set.clear();
+      for (Index i = 0; i < tearing.n_inequalities; ++i)
+        if (smalbe.m[i] > homogenised.lower[i])
+          solution.active_set.push_back(tearing.inequality_unknown[i]);
+      std::sort(solution.active_set.begin(), solution.active_set.end());
     }
 
     void
@@ -349,131 +383,43 @@ namespace unilateral::lcp
     {
       const Tearing &tearing = *problem.tearing;
       check_tearing(tearing, problem);
-      DualOperators dual(tearing, report.counters);
-      if (!dual.coarse_ok())
+      const DualOperators dual(tearing);
+      dual.add_setup(report);
+      if (!dual.coarse_factorised())
         {
           report.status  = Status::singular;
-          report.message = "TFETI: the coarse matrix G G^T is singular: a "
-                           "subdomain is held by no support and no "
-                           "neighbour, so its rigid motions are free";
+          report.message = "TFETI: " + dual.coarse_failure();
           return;
         }
-      const Index n = tearing.n_multipliers();
-      // Step 2: homogenisation.
-      const Vector e      = dual.apply_rigid_motions_transposed(tearing.f);
-      const Vector l0     = dual.G.transpose() * dual.coarse_solve(e);
-      const Vector Kplusf = dual.apply_pseudo_inverse(tearing.f);
-      const Vector d      = tearing.B * Kplusf - tearing.c;
-      Vector       lower  = Vector::Constant(
-        n, -std::numeric_limits<double>::infinity());
-      for (Index i = 0; i < tearing.n_inequalities; ++i)
-        lower[i] = -l0[i];
-      const Vector b0    = dual.apply_P(d - dual.apply_F(l0));
-      const double scale = std::max(d.norm(), b0.norm()) > 0 ?
-                             std::max(d.norm(), b0.norm()) :
-                             1.0;
+      const HomogenisedDual homogenised = homogenise(dual);
+      Smalbe                smalbe(dual, homogenised, options);
+      const Smalbe::Outcome outcome =
+        smalbe.run(iteration_limit(100000), progress);
+      primal_answer(dual, homogenised, smalbe, solution);
 
-      // Step 3: SMALBE-M with MPRGP.
-      const double pfp_norm = largest_eigenvalue(dual, n);
-      const double rho      = options.penalty * pfp_norm;
-      const auto   Q        = [&](const Vector &v) -> Vector {
-        return v - dual.apply_P(v);
-      };
-      const auto violation_of = [&](const Vector &v) {
-        return rho * Q(v).norm();
-      };
-      Vector       m = Vector::Zero(n);
-      Vector       q = Vector::Zero(n); // the equality multiplier, G^T mu
-      double       M = options.precision_factor * pfp_norm;
-      double       previous_lagrangian = -std::numeric_limits<double>::infinity();
-      const unsigned int limit = iteration_limit(100000);
-      Vector       gradient;
-      bool         converged = false;
-      unsigned int outer     = 0;
-      for (; outer < options.max_outer; ++outer)
+      report.iterations = smalbe.outer;
+      report.counters.cg_iterations += smalbe.inner;
+      dual.add_work(report);
+      report.set_figure("outer_iterations", smalbe.outer);
+      report.set_figure("inner_iterations", smalbe.inner);
+      switch (outcome)
         {
-          const Vector r = b0 - q;
-          Mprgp        inner(
-            [&](const Vector &x, Vector &y) {
-              const Vector Px = dual.apply_P(x);
-              y = dual.apply_P(dual.apply_F(Px)) + rho * (x - Px);
-            },
-            r,
-            lower,
-            1.9 / std::max(pfp_norm, rho),
-            1.0);
-          // SMALBE's inner precision: the projected gradient against the
-          // current violation of G l = e (m is MPRGP's iterate), and never
-          // finer than the final tolerance needs.
-          const auto stop = [&](const double projected_gradient) {
-            return projected_gradient <=
-                   std::max(options.tolerance * scale,
-                            std::min(M * Q(m).norm(), 0.1 * scale));
-          };
-          const unsigned int budget =
-            limit > dual.products_with_F ? limit - dual.products_with_F : 0;
-          const Mprgp::Outcome outcome = inner.solve(m, stop, budget / 2);
-          gradient = inner.gradient();
-          report.counters.cg_iterations += inner.steps();
-          report.iterations = outer + 1;
-          if (outcome == Mprgp::Outcome::not_definite ||
-              outcome == Mprgp::Outcome::diverged)
-            {
-              report.status  = Status::singular;
-              report.message = "TFETI: the dual's inner solve broke down";
-              return;
-            }
-          const double violation = violation_of(m);
-          const double projected = inner.projected_gradient(m).norm();
-          if (progress != nullptr)
-            *progress << "    tfeti outer iteration " << outer + 1
-                      << std::scientific << std::setprecision(2)
-                      << ": projected gradient " << projected / scale
-                      << ", rho |G l - e| " << violation / scale << ", "
-                      << inner.steps() << " inner iterations"
-                      << std::defaultfloat << std::endl;
-          if (projected <= options.tolerance * scale &&
-              violation <= options.tolerance * scale)
-            {
-              converged = true;
-              break;
-            }
-          if (outcome == Mprgp::Outcome::iteration_limit ||
-              dual.products_with_F >= limit)
-            break;
-          // The augmented Lagrangian at m: the inner functional
-          // 1/2 m^T H m - r^T m = 1/2 m^T (g - r).
-          const double lagrangian = 0.5 * m.dot(gradient - r);
-          const double squared_violation = Q(m).squaredNorm();
-          q += rho * Q(m);
-          // SMALBE-M's safeguard: the Lagrangian (with the updated q) must
-          // rise by rho/2 |Q m|^2 on the last one; when it does not, the
-          // inner solves were too coarse for this rho, and M shrinks.
-          const double updated_lagrangian = lagrangian + rho * squared_violation;
-          if (updated_lagrangian <
-              previous_lagrangian + 0.5 * rho * squared_violation)
-            M /= 2;
-          previous_lagrangian = updated_lagrangian;
-        }
-
-      // Step 4: the primal answer.
-      const Vector l     = l0 + m;
-      const Vector alpha = dual.coarse_solve(
-        dual.G * (dual.apply_F(l) - d - gradient));
-      const Vector x = dual.apply_pseudo_inverse(
-                         tearing.f - tearing.B.transpose() * l) +
-                       dual.apply_rigid_motions(alpha);
-      solution.u = tearing.to_problem * x;
-      if (converged)
-        report.status = Status::converged;
-      else
-        {
-          report.status  = Status::iteration_limit;
-          report.message = "TFETI did not reach its tolerance in " +
-                           std::to_string(report.iterations) +
-                           " outer iterations and " +
-                           std::to_string(dual.products_with_F) +
-                           " products with F";
+          case Smalbe::Outcome::converged:
+            report.status = Status::converged;
+            return;
+          case Smalbe::Outcome::broke_down:
+            report.status  = Status::singular;
+            report.message = "TFETI: the dual's inner solve (MPRGP) broke "
+                             "down: P F P + rho Q is not positive definite";
+            return;
+          case Smalbe::Outcome::outer_limit:
+          case Smalbe::Outcome::product_limit:
+            report.status = Status::iteration_limit;
+            report.message =
+              "TFETI did not reach its tolerance in " +
+              std::to_string(smalbe.outer) + " outer iterations and " +
+              std::to_string(dual.products_with_F()) + " products with F";
+            return;
         }
     }
   } // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <sstream>
 
 namespace unilateral::masonry
 {
@@ -15,12 +16,12 @@ namespace unilateral::masonry
     /// load, and the positions of its DOFs relative to its centre.
     struct TornBlock
     {
-      std::vector<DofIndex>            dofs;
-      lcp::DenseMatrix                 stiffness;
-      lcp::Vector                      load;
-      std::vector<dealii::Point<2>>    position;
-      std::vector<unsigned int>        component;
-      unsigned int                     shape = 0;
+      std::vector<DofIndex>         dofs;
+      lcp::DenseMatrix              stiffness;
+      lcp::Vector                   load;
+      std::vector<dealii::Point<2>> position;
+      std::vector<unsigned int>     component;
+      unsigned int                  shape = 0;
     };
 
     /// The rigid motions of a block about its centre: the two translations
@@ -36,8 +37,8 @@ namespace unilateral::masonry
       for (std::size_t j = 0; j < n; ++j)
         {
           const dealii::Tensor<1, 2> r = block.position[j] - centre;
-          R(j, block.component[j]) = 1;
-          R(j, 2) = block.component[j] == 0 ? -r[1] : r[0];
+          R(j, block.component[j])     = 1;
+          R(j, 2)                      = block.component[j] == 0 ? -r[1] : r[0];
         }
       return R;
     }
@@ -62,7 +63,7 @@ namespace unilateral::masonry
 
     // Each block's DOFs, numbered by component, then by position (rounded
     // to the tolerance) relative to its lower left corner.
-    std::vector<TornBlock>        blocks(n_blocks);
+    std::vector<TornBlock>                       blocks(n_blocks);
     std::vector<dealii::types::global_dof_index> dofs(dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -136,11 +137,11 @@ namespace unilateral::masonry
       }
 
     // Shapes: blocks with the same stiffness (to round-off) share it.
-    auto tearing = std::make_shared<lcp::Tearing>();
+    auto                      tearing = std::make_shared<lcp::Tearing>();
     std::vector<unsigned int> representative;
     for (unsigned int b = 0; b < n_blocks; ++b)
       {
-        TornBlock       &block = blocks[b];
+        TornBlock   &block = blocks[b];
         unsigned int shape = 0;
         for (; shape < representative.size(); ++shape)
           {
@@ -185,6 +186,24 @@ namespace unilateral::masonry
           }
       }
 
+    std::vector<dealii::Point<2>> corner_of_subdomain;
+    for (const unsigned int b : order)
+      {
+        dealii::Point<2> corner = blocks[b].position.front();
+        for (const auto &p : blocks[b].position)
+          for (unsigned int d = 0; d < 2; ++d)
+            corner[d] = std::min(corner[d], p[d]);
+        corner_of_subdomain.push_back(corner);
+      }
+    tearing->describe_subdomain = [order,
+                                   corner_of_subdomain](const lcp::Index k) {
+      std::ostringstream text;
+      text << "block " << order[k] << " (lower left corner ("
+           << corner_of_subdomain[k][0] << ", " << corner_of_subdomain[k][1]
+           << "))";
+      return text.str();
+    };
+
     // B and c: the constraints C_k u >= bound as -C_k x <= -bound, then the
     // fixed DOFs as x_i = 0.
     std::vector<Eigen::Triplet<double, lcp::Index>> rows;
@@ -201,10 +220,14 @@ namespace unilateral::masonry
           entries.emplace_back(row, physical[k.lower], -sign);
         }
     };
-    for (const UnilateralConstraint &k : contacts.constraints)
+    for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
       {
-        add_constraint_row(k, -1.0, static_cast<lcp::Index>(c.size()), rows);
-        c.push_back(-k.bound);
+        add_constraint_row(contacts.constraints[k],
+                           -1.0,
+                           static_cast<lcp::Index>(c.size()),
+                           rows);
+        c.push_back(-contacts.constraints[k].bound);
+        tearing->inequality_unknown.push_back(change.variable_of_constraint(k));
       }
     tearing->n_inequalities = static_cast<lcp::Index>(c.size());
     for (unsigned int dof = 0; dof < n_dofs; ++dof)
