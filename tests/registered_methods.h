@@ -74,16 +74,20 @@ namespace registered_methods
    * Every registered method and variant, on the full LCP (first all of
    * these) and then on the Schur complement. A dense method takes the full
    * LCP only where every unknown is constrained (@p has_unconstrained
-   * false), and then not its Schur complement.
+   * false), and then not its Schur complement. A method that works on the
+   * problem torn into subdomains (needs_tearing) takes only the full LCP of
+   * a scene that tears it (@p torn): the Schur complement has no tearing.
    */
   inline std::vector<MethodRun>
-  all(const bool has_unconstrained)
+  all(const bool has_unconstrained, const bool torn = false)
   {
     std::vector<MethodRun> runs;
     for (const bool schur_complement : {false, true})
       for (const SolverInfo &info : SolverRegistry::all())
         {
           if (info.dense && has_unconstrained != schur_complement)
+            continue;
+          if (info.needs_tearing && (!torn || schur_complement))
             continue;
           runs.push_back({&info, schur_complement});
           for (const Variant &variant : info.variants)

@@ -105,7 +105,7 @@ namespace unilateral::lcp
   project(const Problem          &problem,
           const SolverParameters &parameters,
           const double            first_eps,
-          const bool              from_interior_point,
+          const FirstActiveSet    first_active_set,
           Solution               &solution,
           Report                 &report,
           std::ostream           *progress)
@@ -128,8 +128,9 @@ namespace unilateral::lcp
 
     SolverParameters projection_parameters = parameters;
     Solution         start                 = solution;
-    start.active_set.clear(); // the test on u_eps decides, not a hint
-    if (from_interior_point)
+    if (first_active_set == FirstActiveSet::test_on_u)
+      start.active_set.clear(); // the test on u_eps decides, not a hint
+    else if (first_active_set == FirstActiveSet::interior_point)
       start.active_set = interior_point_active_set(problem, solution.u);
     Report projection;
     for (;;)

@@ -33,6 +33,18 @@ namespace unilateral::lcp
     phase_times.emplace_back(phase, seconds);
   }
 
+  void
+  Report::set_figure(const std::string &name, const double value)
+  {
+    for (auto &entry : figures)
+      if (entry.first == name)
+        {
+          entry.second = value;
+          return;
+        }
+    figures.emplace_back(name, value);
+  }
+
   double
   Report::total_time() const
   {

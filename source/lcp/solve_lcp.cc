@@ -112,6 +112,11 @@ namespace unilateral::lcp
                          std::to_string(attempt.parameters.max_dense_size) +
                          ": use 'Schur complement = true' (" + info.name +
                          " works on S only) or a sparse method");
+      if (info.needs_tearing && problem.tearing == nullptr)
+        throw InputError("method '" + info.name +
+                         "' works on a problem torn into subdomains, which "
+                         "this scene does not build (the masonry scene "
+                         "does): choose another method");
       PhaseTimer timer(report, "solve");
       info.create(attempt.parameters, attempt.parameters.of(info.name))
         ->solve(problem, solution, report, progress);
@@ -216,10 +221,14 @@ namespace unilateral::lcp
         regularise ?
           report.regularisation :
           1e3 * std::max(attempt.auto_regularisation, 1e-12) * mean_diagonal;
+      const FirstActiveSet first_active_set =
+        info.gives_active_set      ? FirstActiveSet::given :
+        !regularise && !info.exact ? FirstActiveSet::interior_point :
+                                     FirstActiveSet::test_on_u;
       project(problem,
               parameters,
               first_eps,
-              !regularise && !info.exact,
+              first_active_set,
               solution,
               report,
               progress);

@@ -102,6 +102,12 @@ namespace unilateral
         .set("partial_forward_solves", work.partial_forward_solves)
         .set("centrality_correctors", work.centrality_correctors)
         .set("matrix_vector_products", work.matrix_vector_products);
+      if (!report.figures.empty())
+        {
+          JsonObject &method = summary.object("method");
+          for (const auto &[name, value] : report.figures)
+            method.set(name, value);
+        }
       return summary;
     }
 

@@ -40,7 +40,7 @@ namespace
   all_methods()
   {
     std::vector<Method> methods;
-    for (const Method &method : registered_methods::all(true))
+    for (const Method &method : registered_methods::all(true, true))
       if (method.schur_complement || !method.info->is_default)
         methods.push_back(method);
     return methods;

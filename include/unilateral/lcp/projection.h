@@ -27,16 +27,25 @@ namespace unilateral::lcp
    * @p solution: on entry the approximate answer (and the factor it
    * leaves), on exit the projected one. @p first_eps: the absolute eps the
    * continuation starts below (that of the regularised solve).
-   * @p from_interior_point: the start is an interior iterate, whose first
-   * active set is chosen by interior_point_active_set().
+   * @p first_active_set: how the first active set is chosen: by the test
+   * on u (PDAS's own), by interior_point_active_set() for an interior
+   * iterate, or the one the method gave with its answer
+   * (solution.active_set; SolverInfo::gives_active_set).
    * Adds its iterations, stages, work and time to @p report, and sets its
    * status and message if the projection failed.
    */
+  enum class FirstActiveSet
+  {
+    test_on_u,
+    interior_point,
+    given
+  };
+
   void
   project(const Problem          &problem,
           const SolverParameters &parameters,
           double                  first_eps,
-          bool                    from_interior_point,
+          FirstActiveSet          first_active_set,
           Solution               &solution,
           Report                 &report,
           std::ostream           *progress);

@@ -81,6 +81,10 @@ namespace unilateral::lcp
     std::string message;
     /// Wall time per phase in seconds, in the order the phases first ran.
     std::vector<std::pair<std::string, double>> phase_times;
+    /// A method's own figures, by name, in the order first set (TFETI:
+    /// outer and inner iterations, products with F, the coarse problem's
+    /// size and time); summary.json has them as "method".
+    std::vector<std::pair<std::string, double>> figures;
 
     bool
     converged() const
@@ -90,6 +94,10 @@ namespace unilateral::lcp
 
     void
     add_time(const std::string &phase, double seconds);
+
+    /// Set the figure @p name (replacing its earlier value).
+    void
+    set_figure(const std::string &name, double value);
 
     /// The phase times of @p other, each named with @p prefix in front.
     void

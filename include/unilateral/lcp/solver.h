@@ -261,6 +261,15 @@ namespace unilateral::lcp
     /// Moves one index (or two) per iteration (LSSNN, Graves): at least as
     /// many iterations as indices change side.
     bool single_pivot = false;
+    /// Works on the problem torn into subdomains (Problem::tearing, which
+    /// the scenes that can build one build for such a method); refuses a
+    /// problem without one.
+    bool needs_tearing = false;
+    /// Its answer comes with the active set it ended on
+    /// (solution.active_set), which the projection step starts from instead
+    /// of a test on u: TFETI's multipliers tell which contacts close, where
+    /// u's tiny gaps and its A u - b cannot.
+    bool gives_active_set = false;
     /// The method of the projection step: exact, warm-started, it finishes
     /// an approximate or regularised answer on A itself (exactly one method
     /// sets it).

@@ -535,6 +535,34 @@ namespace unilateral::masonry
               constraint_variable[edge.constraint] =
                 row_variable[v * dim + row_of_class(v, k)];
           }
+
+    // The rows of C~: a frame row times u, or for the owner of a
+    // constraint its gap.
+    rows.assign(n_variables, {});
+    for (std::size_t a = 0; a < n_nodes; ++a)
+      if (held_index[a] < 0)
+        for (unsigned int r = 0; r < dim; ++r)
+          if (const int t = row_variable[a * dim + r]; t >= 0)
+            for (unsigned int c = 0; c < dim; ++c)
+              if (frames[a].rows[r][c] != 0)
+                rows[t].emplace_back(nodes[a][c], frames[a].rows[r][c]);
+    for (std::size_t k = 0; k < constraints.size(); ++k)
+      {
+        const UnilateralConstraint<dim> &constraint = constraints[k];
+        auto                            &gap = rows[constraint_variable[k]];
+        gap.clear();
+        for (unsigned int c = 0; c < dim; ++c)
+          if (constraint.normal[c] != 0)
+            {
+              if (constraint.kind == ConstraintKind::joint)
+                gap.emplace_back(nodes[constraint.upper][c],
+                                 constraint.normal[c]);
+              gap.emplace_back(nodes[constraint.lower][c],
+                               constraint.kind == ConstraintKind::joint ?
+                                 -constraint.normal[c] :
+                                 constraint.normal[c]);
+            }
+      }
   }
 
   template <int dim>

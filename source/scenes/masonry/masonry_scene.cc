@@ -4,6 +4,7 @@
 #include <unilateral/scenes/masonry/assembly.h>
 #include <unilateral/scenes/masonry/mesh.h>
 #include <unilateral/scenes/masonry/mesh_file.h>
+#include <unilateral/scenes/masonry/tearing.h>
 
 #include "scene_state.h"
 
@@ -280,6 +281,18 @@ namespace unilateral::masonry
       }
     else
       unit = 1;
+
+    // The wall torn into its blocks, for a method that works on them.
+    if (lcp::SolverRegistry::get(context.solver.method).needs_tearing)
+      lcp_problem.tearing =
+        tear_into_blocks<dim>(state->discretisation,
+                              state->contacts,
+                              *state->change,
+                              state->loads,
+                              problem_sizes.n_blocks,
+                              unit,
+                              parameters.geometry.coincidence_tolerance *
+                                problem_sizes.cell_size);
   }
 
   // u = C~^-1 u~, and for every constraint its normal gap (the gap variable,

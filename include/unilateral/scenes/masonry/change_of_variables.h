@@ -212,13 +212,25 @@ namespace unilateral::masonry
     std::vector<double>
     to_physical(const double *new_variables) const;
 
+    /// Row @p variable of C~ itself: u~_variable = sum of coefficient *
+    /// u_dof over these (DOF, coefficient) pairs, the constants aside (a
+    /// gap is n . (u_upper - u_lower) or n . u, any other variable its
+    /// node's frame row times u). For the dual methods, which work in the
+    /// physical DOFs.
+    const std::vector<std::pair<DofIndex, double>> &
+    row(const unsigned int variable) const
+    {
+      return rows[variable];
+    }
+
   private:
-    unsigned int             n_variables = 0;
-    std::vector<int>         variable;
-    std::vector<int>         constraint_variable;
-    std::vector<std::size_t> term_start;
-    std::vector<Term>        terms;
-    std::vector<double>      offsets;
-    bool                     any_offset = false;
+    unsigned int                                          n_variables = 0;
+    std::vector<int>                                      variable;
+    std::vector<int>                                      constraint_variable;
+    std::vector<std::size_t>                              term_start;
+    std::vector<Term>                                     terms;
+    std::vector<double>                                   offsets;
+    bool                                                  any_offset = false;
+    std::vector<std::vector<std::pair<DofIndex, double>>> rows;
   };
 } // namespace unilateral::masonry

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <unilateral/lcp/problem.h>
+#include <unilateral/lcp/report.h>
+#include <unilateral/lcp/sparse_cholesky.h>
+#include <unilateral/lcp/tearing.h>
+
+#include <string>
+#include <vector>
+
+namespace unilateral::lcp
+{
+  /**
+   * The operators of the dual of a torn problem (TFETI, Dostal, Horak &
+   * Kucera 2006): K^+ and R by shape, B, G = R^T B^T = (B R)^T and the
+   * coarse matrix G G^T, factorised once, and with them
+   *   F = B K^+ B^T,  P = I - Q,  Q = G^T (G G^T)^-1 G.
+   *
+   * K_s^+ = (K_s + s R_s R_s^T)^-1 - R_s R_s^T / s, R_s made orthonormal and
+   * s the mean diagonal of K_s: the Moore-Penrose inverse, dense, once per
+   * shape, so that K^+ x is one product of matrices per group of
+   * subdomains of that shape (BLAS 3). G G^T is singular where a subdomain's
+   * rigid motions are held by no multiplier (no support, no neighbour):
+   * coarse_factorised() is then false and coarse_failure() says which.
+   *
+   * Every product with F and every coarse solve is counted and timed
+   * (add_work), for the report: products with F are TFETI's measure of
+   * work, the coarse problem its one global coupling.
+   */
+  class DualOperators
+  {
+  public:
+    explicit DualOperators(const Tearing &tearing);
+
+    const Tearing &
+    tearing() const
+    {
+      return torn;
+    }
+
+    Index
+    n_multipliers() const
+    {
+      return torn.n_multipliers();
+    }
+
+    /// The size of the coarse problem: the rigid motions of all subdomains.
+    Index
+    n_coarse() const
+    {
+      return coarse_size;
+    }
+
+    const SparseMatrix &
+    G() const
+    {
+      return coarse_matrix;
+    }
+
+    bool
+    coarse_factorised() const
+    {
+      return factorised;
+    }
+
+    /// Why G G^T is singular (which subdomain floats), for a message.
+    std::string
+    coarse_failure() const;
+
+    /// K^+ x.
+    Vector
+    apply_pseudo_inverse(const Vector &x) const;
+
+    /// R alpha.
+    Vector
+    apply_rigid_motions(const Vector &alpha) const;
+
+    /// R^T x.
+    Vector
+    apply_rigid_motions_transposed(const Vector &x) const;
+
+    /// F l = B K^+ B^T l (counted).
+    Vector
+    apply_F(const Vector &l) const;
+
+    /// (G G^T)^-1 v (counted).
+    Vector
+    coarse_solve(const Vector &v) const;
+
+    /// P l = l - Q l.
+    Vector
+    apply_P(const Vector &l) const;
+
+    /// Q l = G^T (G G^T)^-1 G l.
+    Vector
+    apply_Q(const Vector &l) const;
+
+    /// ||Q l|| = ((G l)^T (G G^T)^-1 G l)^1/2: ||G l|| in orthonormalised
+    /// rows.
+    double
+    norm_of_Q(const Vector &l) const;
+
+    /// (P F P + rho Q) x, with two coarse solves and one product with F.
+    Vector
+    apply_penalised(const Vector &x, double rho) const;
+
+    unsigned int
+    products_with_F() const
+    {
+      return n_products;
+    }
+
+    /// The coarse problem's size and factorisation, into @p report's
+    /// figures and counters.
+    void
+    add_setup(Report &report) const;
+
+    /// Products with F, coarse solves and their times, into @p report.
+    void
+    add_work(Report &report) const;
+
+  private:
+    void
+    pseudo_inverses();
+
+    void
+    coarse_space();
+
+    const Tearing           &torn;
+    std::vector<DenseMatrix> pseudo_inverse, rigid;
+    SparseMatrix             coarse_matrix;
+    Index                    coarse_size = 0;
+    SparseCholesky           coarse;
+    bool                     factorised = false;
+    Counters                 setup_counters;
+    double                   setup_seconds = 0, factorisation_seconds = 0;
+    mutable unsigned int     n_products = 0, n_coarse_solves = 0;
+    mutable double           product_seconds = 0, coarse_seconds = 0;
+  };
+} // namespace unilateral::lcp

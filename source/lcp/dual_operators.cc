@@ -1,0 +1,264 @@
+#include <unilateral/lcp/dual_operators.h>
+
+#include <Eigen/Dense>
+
+#include <chrono>
+#include <cmath>
+
+namespace unilateral::lcp
+{
+  namespace
+  {
+    /// Adds the wall time of its lifetime to a number of seconds.
+    class Stopwatch
+    {
+    public:
+      explicit Stopwatch(double &seconds)
+        : seconds(seconds)
+        , start(std::chrono::steady_clock::now())
+      {}
+
+      ~Stopwatch()
+      {
+        const std::chrono::duration<double> elapsed =
+          std::chrono::steady_clock::now() - start;
+        seconds += elapsed.count();
+      }
+
+    private:
+      double                               &seconds;
+      std::chrono::steady_clock::time_point start;
+    };
+  } // namespace
+
+  DualOperators::DualOperators(const Tearing &tearing)
+    : torn(tearing)
+  {
+    Stopwatch watch(setup_seconds);
+    pseudo_inverses();
+    coarse_space();
+  }
+
+  // K_s^+ = (K_s + s R R^T)^-1 - R R^T / s with R orthonormal: K_s + s R R^T
+  // is K_s on its range and s on its null space.
+  void
+  DualOperators::pseudo_inverses()
+  {
+    for (const Tearing::Shape &shape : torn.shapes)
+      {
+        const Index       n = static_cast<Index>(shape.stiffness.rows());
+        const DenseMatrix R =
+          Eigen::HouseholderQR<DenseMatrix>(shape.rigid_motions)
+            .householderQ() *
+          DenseMatrix::Identity(n, shape.rigid_motions.cols());
+        const double      s       = shape.stiffness.diagonal().mean();
+        const DenseMatrix RRt     = R * R.transpose();
+        const DenseMatrix regular = shape.stiffness + s * RRt;
+        pseudo_inverse.push_back(
+          regular.llt().solve(DenseMatrix::Identity(n, n)) - RRt / s);
+        rigid.push_back(R);
+      }
+  }
+
+  // G = R^T B^T (as (B R)^T) and G G^T, factorised.
+  void
+  DualOperators::coarse_space()
+  {
+    std::vector<Index>               coarse_of_dof(torn.n_dofs());
+    std::vector<Index>               local_of_dof(torn.n_dofs());
+    std::vector<const DenseMatrix *> rigid_of_dof(torn.n_dofs());
+    for (const Tearing::Group &group : torn.groups)
+      {
+        const DenseMatrix &R = rigid[group.shape];
+        const Index        n = static_cast<Index>(R.rows());
+        for (Index k = 0; k < group.n_subdomains; ++k)
+          {
+            for (Index j = 0; j < n; ++j)
+              {
+                const Index dof    = group.first_dof + k * n + j;
+                coarse_of_dof[dof] = coarse_size;
+                local_of_dof[dof]  = j;
+                rigid_of_dof[dof]  = &R;
+              }
+            coarse_size += static_cast<Index>(R.cols());
+          }
+      }
+    std::vector<Eigen::Triplet<double, Index>> entries;
+    for (Index dof = 0; dof < torn.B.outerSize(); ++dof)
+      for (SparseMatrix::InnerIterator it(torn.B, dof); it; ++it)
+        {
+          const DenseMatrix &R = *rigid_of_dof[dof];
+          for (Index a = 0; a < R.cols(); ++a)
+            entries.emplace_back(coarse_of_dof[dof] + a,
+                                 it.row(),
+                                 it.value() * R(local_of_dof[dof], a));
+        }
+    coarse_matrix.resize(coarse_size, torn.n_multipliers());
+    coarse_matrix.setFromTriplets(entries.begin(), entries.end());
+    coarse_matrix.makeCompressed();
+    SparseMatrix GGt = coarse_matrix * SparseMatrix(coarse_matrix.transpose());
+    GGt.makeCompressed();
+    // Its condition grows like the square of the number of subdomains
+    // across the body; below this estimate the rigid motions are not all
+    // held.
+    coarse.minimum_rcond = 1e-14;
+    Stopwatch watch(factorisation_seconds);
+    factorised = coarse.factorise(GGt, setup_counters);
+  }
+
+  std::string
+  DualOperators::coarse_failure() const
+  {
+    // A subdomain that no multiplier touches, or whose multipliers leave a
+    // rigid motion free: its own block of G G^T is singular.
+    Index first = 0, subdomain = 0;
+    for (const Tearing::Group &group : torn.groups)
+      {
+        const Index r = static_cast<Index>(rigid[group.shape].cols());
+        for (Index k = 0; k < group.n_subdomains; ++k, ++subdomain)
+          {
+            const DenseMatrix own =
+              DenseMatrix(coarse_matrix.middleRows(first, r)) *
+              DenseMatrix(coarse_matrix.middleRows(first, r)).transpose();
+            first += r;
+            Eigen::SelfAdjointEigenSolver<DenseMatrix> eigen(own);
+            if (!(eigen.eigenvalues().minCoeff() >
+                  1e-12 * eigen.eigenvalues().cwiseAbs().maxCoeff()))
+              return "the coarse matrix G G^T is singular: " +
+                     torn.describe(subdomain) +
+                     " is held by no support and no neighbour in some "
+                     "direction, so a rigid motion of it is free and the "
+                     "problem has no unique solution";
+          }
+      }
+    return "the coarse matrix G G^T is singular: the subdomains together "
+           "have a free rigid motion (a mechanism: some are held only by "
+           "others that are free themselves)";
+  }
+
+  Vector
+  DualOperators::apply_pseudo_inverse(const Vector &x) const
+  {
+    Vector y(x.size());
+    for (const Tearing::Group &group : torn.groups)
+      {
+        const DenseMatrix &Kplus = pseudo_inverse[group.shape];
+        const Index        n     = static_cast<Index>(Kplus.rows());
+        const Eigen::Map<const DenseMatrix> X(x.data() + group.first_dof,
+                                              n,
+                                              group.n_subdomains);
+        Eigen::Map<DenseMatrix>             Y(y.data() + group.first_dof,
+                                  n,
+                                  group.n_subdomains);
+        Y.noalias() = Kplus * X;
+      }
+    return y;
+  }
+
+  Vector
+  DualOperators::apply_rigid_motions(const Vector &alpha) const
+  {
+    Vector x(torn.n_dofs());
+    Index  first = 0;
+    for (const Tearing::Group &group : torn.groups)
+      {
+        const DenseMatrix                  &R = rigid[group.shape];
+        Eigen::Map<DenseMatrix>             X(x.data() + group.first_dof,
+                                  R.rows(),
+                                  group.n_subdomains);
+        const Eigen::Map<const DenseMatrix> A(alpha.data() + first,
+                                              R.cols(),
+                                              group.n_subdomains);
+        X.noalias() = R * A;
+        first += static_cast<Index>(R.cols()) * group.n_subdomains;
+      }
+    return x;
+  }
+
+  Vector
+  DualOperators::apply_rigid_motions_transposed(const Vector &x) const
+  {
+    Vector alpha(coarse_size);
+    Index  first = 0;
+    for (const Tearing::Group &group : torn.groups)
+      {
+        const DenseMatrix                  &R = rigid[group.shape];
+        const Eigen::Map<const DenseMatrix> X(x.data() + group.first_dof,
+                                              R.rows(),
+                                              group.n_subdomains);
+        Eigen::Map<DenseMatrix>             A(alpha.data() + first,
+                                  R.cols(),
+                                  group.n_subdomains);
+        A.noalias() = R.transpose() * X;
+        first += static_cast<Index>(R.cols()) * group.n_subdomains;
+      }
+    return alpha;
+  }
+
+  Vector
+  DualOperators::apply_F(const Vector &l) const
+  {
+    Stopwatch watch(product_seconds);
+    ++n_products;
+    return torn.B * apply_pseudo_inverse(torn.B.transpose() * l);
+  }
+
+  Vector
+  DualOperators::coarse_solve(const Vector &v) const
+  {
+    Stopwatch watch(coarse_seconds);
+    ++n_coarse_solves;
+    Vector y;
+    coarse.solve(v, y);
+    return y;
+  }
+
+  Vector
+  DualOperators::apply_Q(const Vector &l) const
+  {
+    return coarse_matrix.transpose() * coarse_solve(coarse_matrix * l);
+  }
+
+  Vector
+  DualOperators::apply_P(const Vector &l) const
+  {
+    return l - apply_Q(l);
+  }
+
+  double
+  DualOperators::norm_of_Q(const Vector &l) const
+  {
+    const Vector Gl = coarse_matrix * l;
+    return std::sqrt(std::max(0.0, Gl.dot(coarse_solve(Gl))));
+  }
+
+  Vector
+  DualOperators::apply_penalised(const Vector &x, const double rho) const
+  {
+    const Vector Qx = apply_Q(x);
+    return apply_P(apply_F(x - Qx)) + rho * Qx;
+  }
+
+  void
+  DualOperators::add_setup(Report &report) const
+  {
+    report.counters += setup_counters;
+    report.set_figure("setup_seconds", setup_seconds);
+    report.set_figure("coarse_factorisation_seconds", factorisation_seconds);
+    report.set_figure("subdomains", torn.n_subdomains());
+    report.set_figure("multipliers", torn.n_multipliers());
+    report.set_figure("coarse_size", coarse_size);
+    report.set_figure("coarse_factor_nonzeros", coarse.factor_nonzeros());
+  }
+
+  void
+  DualOperators::add_work(Report &report) const
+  {
+    report.counters.matrix_vector_products += n_products;
+    report.counters.triangular_solves += n_coarse_solves;
+    report.set_figure("products_with_F_seconds", product_seconds);
+    report.set_figure("coarse_solve_seconds", coarse_seconds);
+    report.set_figure("products_with_F", n_products);
+    report.set_figure("coarse_solves", n_coarse_solves);
+  }
+} // namespace unilateral::lcp
