@@ -5,10 +5,10 @@
 // of the largest). Stack bond has degenerate contacts (closed, no force:
 // their number is printed); where they alone hold a block the
 // displacements may differ, the closed set and the forces may not.
-// Then: without load (u = 0, energy 0), with only a top load, with g = 0
-// (every joint closed), and a block that nothing holds (G G^T singular):
-// never converged, and a message that names the block.
-// TFETI's answer is approximate and the projection step (PDAS from the
+// The same in 3D (m = 5, two blocks thick). Then: without load (u = 0, energy
+// 0), with only a top load, with g = 0 (every joint closed), and a block that
+// nothing holds (G G^T singular): never converged, and a message that names the
+// block. TFETI's answer is approximate and the projection step (PDAS from the
 // contacts whose multipliers are positive) makes it exact: in one or two
 // iterations where TFETI's active set is right, so that is checked too (a
 // wrong dual still ends exact, after many more).
@@ -35,20 +35,23 @@ namespace
            "\nend\n";
   }
 
+  template <int dim>
   double
-  largest_displacement(const MasonryScene<2> &scene)
+  largest_displacement(const MasonryScene<dim> &scene)
   {
     double largest = 0;
     for (const auto &node : scene.nodal_displacements())
-      largest = std::max({largest,
-                          std::abs(node.displacement[0]),
-                          std::abs(node.displacement[1])});
+      for (unsigned int d = 0; d < dim; ++d)
+        largest = std::max(largest, std::abs(node.displacement[d]));
     return largest;
   }
 
   // The verdicts of TFETI's run against PDAS's.
+  template <int dim>
   void
-  compare(const std::string &what, const Run &reference, const Run &result)
+  compare(const std::string &what,
+          const RunOf<dim>  &reference,
+          const RunOf<dim>  &result)
   {
     const auto  &ref_contacts = reference.scene->constraint_results();
     const auto  &contacts     = result.scene->constraint_results();
@@ -88,16 +91,20 @@ namespace
       << "\n";
   }
 
+  template <int dim = 2>
   void
   against_pdas(const std::string &what,
                const std::string &geometry,
                const unsigned int m,
-               const std::string &boundary = "")
+               const std::string &boundary = "",
+               const std::string &masonry  = "")
   {
-    const Run reference =
-      run(parse(prm_text(geometry, m, "pdas", boundary)), "tfeti");
-    const Run result =
-      run(parse(prm_text(geometry, m, "tfeti", boundary)), "tfeti");
+    const RunOf<dim> reference =
+      run<dim>(parse(masonry + prm_text(geometry, m, "pdas", boundary)),
+               "tfeti");
+    const RunOf<dim> result =
+      run<dim>(parse(masonry + prm_text(geometry, m, "tfeti", boundary)),
+               "tfeti");
     compare(what, reference, result);
   }
 } // namespace
@@ -108,6 +115,18 @@ main()
   for (const std::string geometry : {"stack bond", "running bond", "laminae"})
     for (const unsigned int m : {5u, 10u, 20u})
       against_pdas(geometry + ", m = " + std::to_string(m), geometry, m);
+
+  // 3D: the walls two blocks thick (six rigid motions per block), the front
+  // face on rollers (the back leaf is held along z only by the front one).
+  for (const std::string geometry : {"stack bond", "running bond", "laminae"})
+    against_pdas<3>(geometry + ", m = 5, 3D, two blocks thick",
+                    geometry,
+                    5,
+                    "    set Normal displacement zero = left, right, front, "
+                    "base where x > s\n",
+                    "subsection Masonry\n  set Dimension = 3\n"
+                    "  set Blocks through the thickness = 2\n"
+                    "  set Thickness = 2\nend\n");
 
   // Without load nothing moves: u = 0 and the energy 0, whatever the gap.
   {
