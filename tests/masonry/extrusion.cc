@@ -14,19 +14,6 @@ using namespace masonry_test;
 
 namespace
 {
-  template <int dim>
-  unsigned int
-  carrying(const RunOf<dim> &run)
-  {
-    double largest = 0;
-    for (const auto &c : run.scene->constraint_results())
-      largest = std::max(largest, c.contact_force);
-    unsigned int n = 0;
-    for (const auto &c : run.scene->constraint_results())
-      n += c.contact_force > 1e-10 * largest;
-    return n;
-  }
-
   void
   compare(const std::string &geometry, const double gap)
   {

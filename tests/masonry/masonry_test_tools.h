@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -76,6 +77,21 @@ namespace masonry_test
     RunContext      context;
     scene.set_up(context);
     return scene.sizes();
+  }
+
+  /// Contacts with a force above 1e-10 of the largest (a closed contact
+  /// without force may be in the active set or not).
+  template <int dim>
+  unsigned int
+  carrying(const RunOf<dim> &run)
+  {
+    double largest = 0;
+    for (const auto &c : run.scene->constraint_results())
+      largest = std::max(largest, c.contact_force);
+    unsigned int n = 0;
+    for (const auto &c : run.scene->constraint_results())
+      n += c.contact_force > 1e-10 * largest;
+    return n;
   }
 
   inline const char *

@@ -32,20 +32,6 @@ namespace
            "\n  subsection Boundary conditions\n    set Relative gap = " +
            std::to_string(gap) + "\n  end\nend\n";
   }
-
-  /// Contacts with a force above 1e-10 of the largest (a closed contact
-  /// without force may be in the active set or not).
-  unsigned int
-  carrying(const Run &run)
-  {
-    double largest = 0;
-    for (const auto &c : run.scene->constraint_results())
-      largest = std::max(largest, c.contact_force);
-    unsigned int n = 0;
-    for (const auto &c : run.scene->constraint_results())
-      n += c.contact_force > 1e-10 * largest;
-    return n;
-  }
 } // namespace
 
 int
