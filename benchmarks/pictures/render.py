@@ -5,10 +5,11 @@ Run by render.sh as
     xvfb-run -a pvpython render.py OUTPUT_DIR PICTURE_DIR
 
 where OUTPUT_DIR holds the runs wall_stack_bond, wall_running_bond,
-wall_laminae and plate_psi3 (made from the .prm files beside this script)
-and PICTURE_DIR receives wall_*.png and plate_psi3.png. Titles take their
-numbers (m, g, contact count, ...) from each run's summary.json, so they
-always describe the data drawn.
+wall_laminae, plate_psi3 and masonry_arch, masonry_window, masonry_wall_3d,
+masonry_barrel_vault (made from the .prm files beside this script) and
+PICTURE_DIR receives wall_*.png, plate_psi3.png and masonry_*.png. Titles
+take their numbers (m, g, contact count, ...) from each run's summary.json,
+so they always describe the data drawn.
 """
 import json
 import os
@@ -21,7 +22,8 @@ from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import (VTK_QUAD, VTK_QUADRATIC_TRIANGLE,
+from vtkmodules.vtkCommonDataModel import (VTK_HEXAHEDRON, VTK_QUAD,
+                                           VTK_QUADRATIC_TRIANGLE,
                                            vtkCellArray, vtkPolyData)
 import numpy
 
@@ -106,38 +108,35 @@ def style_scalar_bar(bar, title, view, position=(0.84, 0.18)):
     bar.Visibility = 1
 
 
-def read_parameter(run_dir, name):
-    """A value from the run's copy of its parameter file."""
+def read_parameter(run_dir, name, default=None):
+    """A value from the run's copy of its parameter file (default if the
+    file does not set it)."""
     with open(os.path.join(run_dir, "parameters.prm")) as prm:
         match = re.search(r"^\s*set\s+" + re.escape(name) + r"\s*=\s*(.+?)\s*$",
                           prm.read(), re.MULTILINE)
-    return match.group(1)
+    return match.group(1) if match else default
 
 
-def block_outlines(reader):
-    """The outlines of the blocks as lines carrying the displacement.
+def merged_nodes(reader):
+    """The run's grid with its points merged into nodes of the blocks.
 
-    Points are merged by (block, position) in the reference configuration,
-    so a cell edge belongs to a block's outline exactly when no other cell
-    of the same block has it. Handles Q2 output (linear quadrilaterals) and
-    P2 output (quadratic triangles).
+    deal.II writes each cell with points of its own; points are merged here
+    by (block, position) in the reference configuration, so that two blocks
+    meeting in a joint keep nodes of their own. Returns the grid, its cells
+    (a row of point indices per cell), their VTK cell type, the node of
+    each point and the first point of each node.
     """
     grid = servermanager.Fetch(reader)
     if grid.IsA("vtkMultiBlockDataSet"):
         grid = grid.GetBlock(0)
-    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2].astype(float)
-    displacement = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
+    points = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
     block = vtk_to_numpy(grid.GetCellData().GetArray("block_id"))
     cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
     types = set(vtk_to_numpy(grid.GetCellTypesArray()).tolist())
-    if types == {VTK_QUAD}:
-        cells = cells.reshape(-1, 4)
-        edges = [(0, 1), (1, 2), (2, 3), (3, 0)]
-    elif types == {VTK_QUADRATIC_TRIANGLE}:
-        cells = cells.reshape(-1, 6)
-        edges = [(0, 3), (3, 1), (1, 4), (4, 2), (2, 5), (5, 0)]
-    else:
+    if len(types) != 1:
         raise RuntimeError("unexpected cell types %s" % types)
+    cell_type = types.pop()
+    cells = cells.reshape(len(block), -1)
 
     # One id per (block, reference position).
     cell_of_point = numpy.empty(len(points), dtype=numpy.int64)
@@ -147,31 +146,118 @@ def block_outlines(reader):
                                numpy.round(points * 1e7).astype(numpy.int64)])
     _, first, node = numpy.unique(keys, axis=0, return_index=True,
                                   return_inverse=True)
-    node = node.ravel()
-    pairs = numpy.concatenate([numpy.sort(node[cells[:, [a, b]]], axis=1)
-                               for a, b in edges])
-    unique_pairs, count = numpy.unique(pairs, axis=0, return_counts=True)
-    outline = unique_pairs[count == 1]
+    return grid, cells, cell_type, node.ravel(), first
 
+
+def poly_producer(coordinates, cells, arrays):
+    """A ParaView source of a vtkPolyData: points, lines (rows of 2 point
+    ids) or quadrilaterals (rows of 4), and named point arrays."""
     poly = vtkPolyData()
-    coordinates = numpy.zeros((len(first), 3))
-    coordinates[:, :2] = points[first]
     poly.SetPoints(vtkPoints())
-    poly.GetPoints().SetData(numpy_to_vtk(coordinates, deep=True))
-    lines = vtkCellArray()
-    for a, b in outline:
-        lines.InsertNextCell(2)
-        lines.InsertCellPoint(int(a))
-        lines.InsertCellPoint(int(b))
-    poly.SetLines(lines)
-    vector = numpy_to_vtk(displacement[first].astype(float), deep=True)
-    vector.SetName("displacement")
-    poly.GetPointData().AddArray(vector)
-
+    poly.GetPoints().SetData(numpy_to_vtk(numpy.ascontiguousarray(
+        coordinates, dtype=float), deep=True))
+    connectivity = vtkCellArray()
+    for cell in cells:
+        connectivity.InsertNextCell(len(cell))
+        for point in cell:
+            connectivity.InsertCellPoint(int(point))
+    if cells.shape[1] == 2:
+        poly.SetLines(connectivity)
+    else:
+        poly.SetPolys(connectivity)
+    for name, values in arrays.items():
+        array = numpy_to_vtk(numpy.ascontiguousarray(values, dtype=float),
+                             deep=True)
+        array.SetName(name)
+        poly.GetPointData().AddArray(array)
     producer = TrivialProducer()
     producer.GetClientSideObject().SetOutput(poly)
     producer.UpdatePipeline()
     return producer
+
+
+def block_outlines(reader):
+    """The outlines of the blocks of a 2D run as lines carrying the
+    displacement.
+
+    A cell edge belongs to a block's outline exactly when no other cell of
+    the same block has it. Handles Q2 output (linear quadrilaterals) and
+    P2 output (quadratic triangles).
+    """
+    grid, cells, cell_type, node, first = merged_nodes(reader)
+    displacement = vtk_to_numpy(grid.GetPointData().GetArray("displacement"))
+    if cell_type == VTK_QUAD:
+        edges = [(0, 1), (1, 2), (2, 3), (3, 0)]
+    elif cell_type == VTK_QUADRATIC_TRIANGLE:
+        edges = [(0, 3), (3, 1), (1, 4), (4, 2), (2, 5), (5, 0)]
+    else:
+        raise RuntimeError("unexpected cell type %d" % cell_type)
+    pairs = numpy.concatenate([numpy.sort(node[cells[:, [a, b]]], axis=1)
+                               for a, b in edges])
+    unique_pairs, count = numpy.unique(pairs, axis=0, return_counts=True)
+    coordinates = vtk_to_numpy(grid.GetPoints().GetData())[first].astype(
+        float)
+    coordinates[:, 2] = 0.0
+    return poly_producer(coordinates, unique_pairs[count == 1],
+                         {"displacement": displacement[first]})
+
+
+# The faces of a VTK hexahedron, each ordered so that its normal points out.
+HEXAHEDRON_FACES = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5),
+                    (2, 3, 7, 6), (3, 0, 4, 7)]
+
+
+def block_surfaces(reader, feature_angle=30.0):
+    """The blocks of a 3D run as surfaces and edges.
+
+    A cell face belongs to a block's surface exactly when no other cell of
+    the same block has it; the block's edges are where two faces of its
+    surface meet at more than feature_angle degrees (in the reference
+    configuration, so curved voussoirs show only their corners). The points
+    carry the displacement and the von Mises stress averaged over the cells
+    at a node (the program writes it cell by cell).
+    Returns the two sources (surfaces, edges).
+    """
+    grid, cells, cell_type, node, first = merged_nodes(reader)
+    if cell_type != VTK_HEXAHEDRON:
+        raise RuntimeError("unexpected cell type %d" % cell_type)
+    data = grid.GetPointData()
+    displacement = vtk_to_numpy(data.GetArray("displacement"))[first]
+    von_mises = (numpy.bincount(node, vtk_to_numpy(data.GetArray("von_mises")))
+                 / numpy.bincount(node))
+    coordinates = vtk_to_numpy(grid.GetPoints().GetData())[first].astype(
+        float)
+
+    faces = numpy.concatenate([node[cells[:, list(f)]]
+                               for f in HEXAHEDRON_FACES])
+    _, index, count = numpy.unique(numpy.sort(faces, axis=1), axis=0,
+                                   return_index=True, return_counts=True)
+    faces = faces[index[count == 1]]
+    corner = coordinates[faces]
+    normal = numpy.cross(corner[:, 2] - corner[:, 0],
+                         corner[:, 3] - corner[:, 1])
+    normal /= numpy.linalg.norm(normal, axis=1)[:, None]
+
+    # Each edge of a block's closed surface lies on exactly two faces.
+    edges = numpy.sort(numpy.concatenate(
+        [faces[:, [a, (a + 1) % 4]] for a in range(4)]), axis=1)
+    face_of_edge = numpy.tile(numpy.arange(len(faces)), 4)
+    _, inverse, count = numpy.unique(edges, axis=0, return_inverse=True,
+                                     return_counts=True)
+    inverse = inverse.ravel()
+    if not numpy.all(count == 2):
+        raise RuntimeError("a block's surface is not closed")
+    order = numpy.argsort(inverse, kind="stable")
+    first_face = face_of_edge[order[0::2]]
+    second_face = face_of_edge[order[1::2]]
+    cosine = numpy.abs(numpy.sum(normal[first_face] * normal[second_face],
+                                 axis=1))
+    feature = cosine < numpy.cos(numpy.radians(feature_angle))
+    feature_edges = edges[order[0::2]][feature]
+
+    arrays = {"displacement": displacement, "von_mises": von_mises}
+    return (poly_producer(coordinates, faces, arrays),
+            poly_producer(coordinates, feature_edges, arrays))
 
 
 def render_wall(output_dir, picture_dir, key):
@@ -329,12 +415,228 @@ def render_plate(output_dir, picture_dir):
                    ImageResolution=[WIDTH, HEIGHT], CompressionLevel="9")
 
 
+# --- the masonry examples of prm/ -------------------------------------------
+#
+# Each is drawn deformed, its displacement magnified ("factor") so that
+# opened joints and settled blocks show, with its obstacles (the ground, the
+# lowered centring) moved by their gap along the support's normal, magnified
+# by the same factor: a block resting on an obstacle touches it in the
+# picture too. The gap is the run's 'Signorini gap' expression, so the drawn
+# obstacles follow the parameter file.
+#
+#   ground    stretches (x0, x1, settled) of the ground under the base,
+#             settled by the gap or (rollers) not
+#   z         the ground's and the centring's extent along z (3D)
+#   centring  the centring under the intrados (the unit circle)
+#   depth     the drawn thickness of the ground (2D)
+#   range     the von Mises colour range (log scale)
+#   camera    2D: (centre, parallel scale); 3D: (focal point, position)
+#
+# Magnifications: the arch's and the vault's displacements are about 0.02
+# on spans of 4, the window wall's 0.03 on 12, hence x 20; the 3D wall's
+# settled bricks drop by up to 0.05 on a wall of 1, which x 2 shows without
+# pushing them through more than one course.
+MASONRY = {
+    "masonry_arch": {
+        "factor": 20,
+        "title": "Arch of 16 voussoirs in its spandrel wall: "
+                 "centring lowered, right springing settled",
+        "ground": [(-2.0, 0.0, False), (0.0, 2.0, True)],
+        "centring": True,
+        "depth": 0.25,
+        "range": (0.02, 20.0),
+        "camera": ((0.42, 0.8), 2.0),
+    },
+    "masonry_window": {
+        "factor": 20,
+        "title": "Running-bond wall with a window and a stiff lintel "
+                 "on a parabolic settlement",
+        "ground": [(0.0, 12.0, True)],
+        "centring": False,
+        "depth": 0.8,
+        "range": (0.2, 40.0),
+        "camera": ((6.9, 4.4), 7.0),
+    },
+    "masonry_wall_3d": {
+        "factor": 2,
+        "title": "3D running-bond wall of two leaves on a settlement "
+                 "varying along and across it",
+        "ground": [(0.0, 0.5, True), (0.5, 1.0, False)],
+        "z": (-0.1, 0.3),
+        "centring": False,
+        "range": (0.02, 20.0),
+        "camera": ((0.55, 0.4, 0.1), (-1.0, 1.05, 2.85)),
+    },
+    "masonry_barrel_vault": {
+        "factor": 20,
+        "title": "Barrel-vault segment of four rings: centring lowered, "
+                 "ground settling more towards the back",
+        "ground": [(-2.0, 0.0, False), (0.0, 2.0, True)],
+        "z": (0.0, 2.0),
+        "centring": True,
+        "range": (0.02, 20.0),
+        "camera": ((0.35, 0.7, 1.0), (6.4, 5.0, 9.2)),
+    },
+}
+
+GROUND = [0.62, 0.58, 0.52]
+CENTRING = [0.80, 0.68, 0.50]
+
+
+def gap_function(run_dir, summary):
+    """The run's 'Signorini gap' as a numpy function of x, y, z.
+
+    muparser's syntax differs from Python's only in '^' and if(c, a, b)
+    among what the examples use."""
+    expression = read_parameter(run_dir, "Signorini gap")
+    python = expression.replace("^", "**").replace("if(", "where(")
+    names = {"max": numpy.maximum, "min": numpy.minimum, "where": numpy.where,
+             "g": summary["gap"], "H": summary["block_height"]}
+    s = read_parameter(run_dir, "Signorini part of the base")
+    if s is not None:
+        names["s"] = float(s)
+
+    def gap(x, y, z):
+        value = eval(python, {"__builtins__": {}},
+                     dict(names, x=x, y=y, z=z))
+        return numpy.broadcast_to(value, numpy.shape(x)).astype(float)
+    return gap
+
+
+def quad_grid(points):
+    """A source of the quadrilaterals of a structured grid of points
+    (an array ni x nj x 3)."""
+    ni, nj = points.shape[:2]
+    ids = numpy.arange(ni * nj).reshape(ni, nj)
+    quads = numpy.column_stack([ids[:-1, :-1].ravel(), ids[1:, :-1].ravel(),
+                                ids[1:, 1:].ravel(), ids[:-1, 1:].ravel()])
+    return poly_producer(points.reshape(-1, 3), quads, {})
+
+
+def obstacles(spec, gap, dim, factor):
+    """The ground and the centring, moved by factor x gap along the
+    support's normal. In 2D bands of some depth behind the wall (z < 0), in
+    3D sheets."""
+    sources = []
+    n = 81
+    z = numpy.linspace(*spec["z"], 21) if dim == 3 else numpy.zeros(1)
+    for x0, x1, settled in spec["ground"]:
+        x, zz = numpy.meshgrid(numpy.linspace(x0, x1, n), z, indexing="ij")
+        drop = factor * gap(x, 0 * x, zz) if settled else 0 * x
+        if dim == 2:
+            top = numpy.stack([x[:, 0], -drop[:, 0], -0.002 + 0 * x[:, 0]], 1)
+            bottom = top - [0.0, spec["depth"], 0.0]
+            points = numpy.stack([top, bottom], axis=1)
+        else:
+            points = numpy.stack([x, -drop, zz], axis=2)
+        sources.append((quad_grid(points), GROUND))
+    if spec["centring"]:
+        angle = numpy.linspace(0.0, numpy.pi, n)
+        ring = numpy.stack([numpy.cos(angle), numpy.sin(angle)], 1)
+        if dim == 2:
+            drop = factor * gap(ring[:, 0], ring[:, 1], 0 * angle)
+            edge = ring * (1.0 - drop)[:, None]
+            inner = ring * (1.0 - drop - 0.12)[:, None]
+            points = numpy.stack([edge, inner], axis=1)
+            points = numpy.concatenate(
+                [points, numpy.full(points.shape[:2] + (1,), -0.002)], axis=2)
+        else:
+            a, zz = numpy.meshgrid(angle, z, indexing="ij")
+            x, y = numpy.cos(a), numpy.sin(a)
+            drop = factor * gap(x, y, zz)
+            points = numpy.stack([x * (1 - drop), y * (1 - drop), zz], axis=2)
+        sources.append((quad_grid(points), CENTRING))
+    return sources
+
+
+def von_mises_colours(display, view, stress_range, position=(0.86, 0.2)):
+    ColorBy(display, ("POINTS", "von_mises"))
+    lut = GetColorTransferFunction("von_mises")
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.UseLogScale = 1
+    lut.ApplyPreset("Turbo", True)
+    lut.RescaleTransferFunction(*stress_range)
+    style_scalar_bar(GetScalarBar(lut, view), "von Mises\nstress", view,
+                     position=position)
+
+
+def render_masonry(output_dir, picture_dir, name):
+    spec = MASONRY[name]
+    factor = spec["factor"]
+    run_dir = os.path.join(output_dir, name)
+    summary = json.load(open(os.path.join(run_dir, "summary.json")))
+    dim = summary["dimension"]
+    gap = gap_function(run_dir, summary)
+
+    view = new_view()
+    reader = PVDReader(FileName=os.path.join(run_dir, "solution.pvd"))
+    if dim == 2:
+        warp = WarpByVector(Input=reader, Vectors=["POINTS", "displacement"],
+                            ScaleFactor=factor)
+        blocks = Show(warp, view)
+        outline_source = block_outlines(reader)
+    else:
+        surface_source, outline_source = block_surfaces(reader)
+        warp = WarpByVector(Input=surface_source,
+                            Vectors=["POINTS", "displacement"],
+                            ScaleFactor=factor)
+        blocks = Show(warp, view)
+    blocks.Representation = "Surface"
+    von_mises_colours(blocks, view, spec["range"])
+    outlines = WarpByVector(Input=outline_source,
+                            Vectors=["POINTS", "displacement"],
+                            ScaleFactor=factor)
+    lines = Show(outlines, view)
+    solid(lines, [0.1, 0.1, 0.1])
+    lines.LineWidth = 1.5
+    for source, colour in obstacles(spec, gap, dim, factor):
+        display = Show(source, view)
+        solid(display, colour)
+
+    add_text(view, spec["title"], "Upper Center", 21,
+             bold=True)
+    add_text(view, "true scale\n(displacement x 1)" if factor == 1 else
+             "displacement\nmagnified x %g" % factor,
+             (0.80, 0.83), 18, bold=True)
+    add_text(view,
+             "%d blocks, frictionless joints: %d of %d contacts closed; "
+             "largest displacement %.3g\n"
+             "colour: von Mises stress (log scale); block outlines in black; "
+             "%s (brown) moved by %s gap x %g"
+             % (summary["n_blocks"], summary["n_closed_contacts"],
+                summary["n_constraints"], summary["max_displacement"],
+                "ground and centring" if spec["centring"] else "ground",
+                "their" if spec["centring"] else "its", factor),
+             "Lower Center", 15)
+
+    if dim == 2:
+        (x, y), scale = spec["camera"]
+        view.InteractionMode = "2D"
+        view.CameraParallelProjection = 1
+        view.CameraPosition = [x, y, 5.0]
+        view.CameraFocalPoint = [x, y, 0.0]
+        view.CameraViewUp = [0.0, 1.0, 0.0]
+        view.CameraParallelScale = scale
+    else:
+        focus, position = spec["camera"]
+        view.CameraParallelProjection = 0
+        view.CameraFocalPoint = list(focus)
+        view.CameraPosition = list(position)
+        view.CameraViewUp = [0.0, 1.0, 0.0]
+        view.CameraViewAngle = 30
+    Render(view)
+    SaveScreenshot(os.path.join(picture_dir, name + ".png"), view,
+                   ImageResolution=[WIDTH, HEIGHT], CompressionLevel="9")
+
+
 def main():
     output_dir, picture_dir = sys.argv[1], sys.argv[2]
     os.makedirs(picture_dir, exist_ok=True)
     for key in WALLS:
         render_wall(output_dir, picture_dir, key)
     render_plate(output_dir, picture_dir)
+    for name in MASONRY:
+        render_masonry(output_dir, picture_dir, name)
 
 
 if __name__ == "__main__":

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Make the README pictures doc/pictures/*.png from scratch: install ParaView
-# if it is missing, build unilateral, run the four scenes of this folder
+# if it is missing, build unilateral, run the scenes of this folder
 # into output/pictures/ and render them offscreen with ParaView's pvpython.
 #
 #   benchmarks/pictures/render.sh        (from anywhere; Debian bookworm)
@@ -53,7 +53,27 @@ fi
 cmake --build "$build" -j2 --target unilateral
 
 # --- the runs: output/pictures/<run name>/ (a failed solve stops here) -----
-for scene in wall_stack_bond wall_running_bond wall_laminae plate_psi3; do
+# The masonry_*.prm of this folder are copies of the examples prm/masonry_*.prm
+# but for the output and the mesh file's path: check that they still agree.
+settings() {
+  sed -e 's/#.*//' -e 's/[[:space:]]*$//' -e '/^$/d' \
+      -e '/^ *set \(Directory\|Run name\|Progress\) *=/d' \
+      -e 's|\.\./\.\./prm/meshes/|meshes/|' "$1"
+}
+copy=$(mktemp)
+for example in masonry_arch masonry_window masonry_wall_3d \
+    masonry_barrel_vault; do
+  settings "benchmarks/pictures/$example.prm" > "$copy"
+  if ! settings "prm/$example.prm" | diff - "$copy" > /dev/null; then
+    echo "render.sh: benchmarks/pictures/$example.prm no longer has the" \
+      "settings of prm/$example.prm: copy them over" >&2
+    rm -f "$copy"
+    exit 1
+  fi
+done
+rm -f "$copy"
+for scene in wall_stack_bond wall_running_bond wall_laminae plate_psi3 \
+    masonry_arch masonry_window masonry_wall_3d masonry_barrel_vault; do
   echo "render.sh: running benchmarks/pictures/$scene.prm"
   "$build/unilateral" "benchmarks/pictures/$scene.prm" > /dev/null
 done
