@@ -112,6 +112,12 @@ namespace unilateral::lcp
                          std::to_string(attempt.parameters.max_dense_size) +
                          ": use 'Schur complement = true' (" + info.name +
                          " works on S only) or a sparse method");
+      if (info.needs_hierarchy && problem.hierarchy == nullptr)
+        throw InputError("method '" + info.name +
+                         "' works on a hierarchy of meshes, which this "
+                         "problem does not have (the plate scene builds one; "
+                         "a Schur complement has none): choose another "
+                         "method");
       PhaseTimer timer(report, "solve");
       info.create(attempt.parameters, attempt.parameters.of(info.name))
         ->solve(problem, solution, report, progress);

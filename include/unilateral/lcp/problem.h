@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@
  */
 namespace unilateral::lcp
 {
+  struct Hierarchy;
+
   using Index        = int;
   using Vector       = Eigen::VectorXd;
   using DenseMatrix  = Eigen::MatrixXd;
@@ -59,6 +62,9 @@ namespace unilateral::lcp
     /// of one) or verified (verify_semidefinite): solve_lcp does not
     /// factorise it to verify that again.
     bool known_semidefinite = false;
+    /// The problem on a sequence of coarser meshes (hierarchy.h), for the
+    /// multigrid methods; null if the builder made none.
+    std::shared_ptr<const Hierarchy> hierarchy;
     /// @}
 
     Index

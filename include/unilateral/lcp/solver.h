@@ -261,6 +261,10 @@ namespace unilateral::lcp
     /// Moves one index (or two) per iteration (LSSNN, Graves): at least as
     /// many iterations as indices change side.
     bool single_pivot = false;
+    /// Works on the problem's hierarchy of meshes (Problem::hierarchy,
+    /// which the scenes that can build one build for such a method);
+    /// refuses a problem without one.
+    bool needs_hierarchy = false;
     /// The method of the projection step: exact, warm-started, it finishes
     /// an approximate or regularised answer on A itself (exactly one method
     /// sets it).

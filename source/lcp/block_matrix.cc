@@ -1,0 +1,255 @@
+#include <unilateral/lcp/block_matrix.h>
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <numeric>
+
+namespace unilateral::lcp
+{
+  namespace
+  {
+    using Block      = BlockMatrix::Block;
+    using NodeVector = BlockMatrix::NodeVector;
+
+    /**
+     * The blocks of one row gathered before they are stored: a column's
+     * block is found through a marker per column (-1: not in the row yet).
+     */
+    class RowAccumulator
+    {
+    public:
+      explicit RowAccumulator(const Index n_columns)
+        : position(n_columns, -1)
+      {}
+
+      Block &
+      operator[](const Index column)
+      {
+        Index &p = position[column];
+        if (p < 0)
+          {
+            p = static_cast<Index>(columns.size());
+            columns.push_back(column);
+            blocks.push_back(Block::Zero());
+          }
+        return blocks[p];
+      }
+
+      // Append the row, columns sorted, to @p matrix and start a new one.
+      void
+      flush(BlockMatrix &matrix)
+      {
+        order.resize(columns.size());
+        std::iota(order.begin(), order.end(), 0);
+        std::sort(order.begin(), order.end(), [&](const Index a, const Index b) {
+          return columns[a] < columns[b];
+        });
+        for (const Index k : order)
+          {
+            matrix.column.push_back(columns[k]);
+            matrix.blocks.push_back(blocks[k]);
+            position[columns[k]] = -1;
+          }
+        matrix.row_start.push_back(static_cast<Index>(matrix.column.size()));
+        columns.clear();
+        blocks.clear();
+      }
+
+    private:
+      std::vector<Index> position;
+      std::vector<Index> columns;
+      std::vector<Block> blocks;
+      std::vector<Index> order;
+    };
+  } // namespace
+
+  BlockMatrix::NodeMap
+  BlockMatrix::node_map(const std::vector<Index> &nodes,
+                        const unsigned int        block_size,
+                        const Index               n_unknowns)
+  {
+    NodeMap map;
+    map.n_nodes = static_cast<Index>(nodes.size() / block_size);
+    map.node.assign(n_unknowns, -1);
+    map.component.assign(n_unknowns, 0);
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      if (nodes[k] >= 0)
+        {
+          map.node[nodes[k]]      = static_cast<Index>(k / block_size);
+          map.component[nodes[k]] = static_cast<int>(k % block_size);
+        }
+    return map;
+  }
+
+  BlockMatrix
+  BlockMatrix::transpose_of(const SparseMatrix &M,
+                            const NodeMap      &rows,
+                            const NodeMap      &columns,
+                            const bool          diagonal)
+  {
+    // The columns of M node by node.
+    std::vector<Index> start(columns.n_nodes + 1, 0);
+    for (Index j = 0; j < M.cols(); ++j)
+      ++start[columns.node[j] + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<Index> by_node(M.cols());
+    {
+      std::vector<Index> next(start.begin(), start.end() - 1);
+      for (Index j = 0; j < M.cols(); ++j)
+        by_node[next[columns.node[j]]++] = j;
+    }
+
+    BlockMatrix result;
+    result.columns = rows.n_nodes;
+    result.row_start.reserve(columns.n_nodes + 1);
+    result.row_start.push_back(0);
+    RowAccumulator row(rows.n_nodes);
+    for (Index J = 0; J < columns.n_nodes; ++J)
+      {
+        if (diagonal)
+          row[J];
+        for (Index k = start[J]; k < start[J + 1]; ++k)
+          {
+            const Index j = by_node[k];
+            const int   c = columns.component[j];
+            for (SparseMatrix::InnerIterator it(M, j); it; ++it)
+              row[rows.node[it.row()]](c, rows.component[it.row()]) =
+                it.value();
+          }
+        row.flush(result);
+      }
+    if (diagonal)
+      result.find_diagonal();
+    return result;
+  }
+
+  void
+  BlockMatrix::find_diagonal()
+  {
+    diagonal.resize(n_rows());
+    for (Index i = 0; i < n_rows(); ++i)
+      diagonal[i] = static_cast<Index>(
+        std::lower_bound(column.begin() + row_start[i],
+                         column.begin() + row_start[i + 1],
+                         i) -
+        column.begin());
+  }
+
+  void
+  BlockMatrix::vmult(double *y, const double *x) const
+  {
+    for (Index i = 0; i < n_rows(); ++i)
+      {
+        NodeVector sum = NodeVector::Zero();
+        for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
+          sum.noalias() +=
+            blocks[p] * Eigen::Map<const NodeVector>(x + size * column[p]);
+        Eigen::Map<NodeVector>(y + size * i) = sum;
+      }
+  }
+
+  void
+  BlockMatrix::vmult_add(double *y, const double *x) const
+  {
+    for (Index i = 0; i < n_rows(); ++i)
+      {
+        NodeVector sum = NodeVector::Zero();
+        for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
+          sum.noalias() +=
+            blocks[p] * Eigen::Map<const NodeVector>(x + size * column[p]);
+        Eigen::Map<NodeVector>(y + size * i) += sum;
+      }
+  }
+
+  BlockMatrix
+  BlockMatrix::transpose() const
+  {
+    BlockMatrix result;
+    result.columns = n_rows();
+    result.row_start.assign(columns + 1, 0);
+    for (const Index j : column)
+      ++result.row_start[j + 1];
+    std::partial_sum(result.row_start.begin(),
+                     result.row_start.end(),
+                     result.row_start.begin());
+    result.column.resize(column.size());
+    result.blocks.resize(blocks.size());
+    std::vector<Index> next(result.row_start.begin(),
+                            result.row_start.end() - 1);
+    for (Index i = 0; i < n_rows(); ++i)
+      for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
+        {
+          const Index q      = next[column[p]]++;
+          result.column[q]   = i;
+          result.blocks[q]   = blocks[p].transpose();
+        }
+    if (result.n_rows() == result.columns && columns == n_rows() &&
+        !diagonal.empty())
+      result.find_diagonal();
+    return result;
+  }
+
+  BlockMatrix
+  BlockMatrix::galerkin(const BlockMatrix &P,
+                        const BlockMatrix &P_transpose) const
+  {
+    BlockMatrix result;
+    result.columns = P.n_columns();
+    result.row_start.reserve(P.n_columns() + 1);
+    result.row_start.push_back(0);
+    RowAccumulator row(P.n_columns());
+    for (Index I = 0; I < P_transpose.n_rows(); ++I)
+      {
+        row[I];
+        for (Index a = P_transpose.row_start[I];
+             a < P_transpose.row_start[I + 1];
+             ++a)
+          {
+            const Index i = P_transpose.column[a];
+            for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
+              {
+                const Block left = P_transpose.blocks[a] * blocks[p];
+                const Index j    = column[p];
+                for (Index b = P.row_start[j]; b < P.row_start[j + 1]; ++b)
+                  row[P.column[b]].noalias() += left * P.blocks[b];
+              }
+          }
+        row.flush(result);
+      }
+    result.find_diagonal();
+    return result;
+  }
+
+  BlockMatrix
+  BlockMatrix::rows_masked(const double *mask) const
+  {
+    BlockMatrix result = *this;
+    for (Index i = 0; i < n_rows(); ++i)
+      {
+        const Eigen::Map<const NodeVector> m(mask + size * i);
+        for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
+          result.blocks[p] = m.asDiagonal() * blocks[p];
+      }
+    return result;
+  }
+
+  BlockMatrix::Block
+  masked_inverse(const BlockMatrix::Block &block, const double *mask)
+  {
+    // The kept entries: masked in and with a positive diagonal (relative
+    // to the block's largest: a coarse padding entry is zero up to the
+    // round-off of the Galerkin product).
+    const double largest = block.diagonal().cwiseAbs().maxCoeff();
+    NodeVector   kept;
+    for (int c = 0; c < BlockMatrix::size; ++c)
+      kept[c] = mask[c] != 0 && block(c, c) > 1e-14 * largest ? 1.0 : 0.0;
+    // The kept rows and columns, identity elsewhere: invertible where the
+    // kept block is.
+    Block reduced = kept.asDiagonal() * block * kept.asDiagonal();
+    reduced.diagonal() += NodeVector::Ones() - kept;
+    const Block inverse =
+      Eigen::LDLT<Block>(reduced).solve(Block::Identity());
+    return kept.asDiagonal() * inverse * kept.asDiagonal();
+  }
+} // namespace unilateral::lcp
