@@ -10,6 +10,9 @@
 #include <Eigen/SparseCholesky>
 
 #include <vector>
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
 
 namespace unilateral::lcp
 {
@@ -422,6 +425,8 @@ namespace unilateral::lcp
   void
   TruncatedMultigrid::truncate(const unsigned int top, const LevelVector &mask)
   {
+    const auto t0 = std::chrono::steady_clock::now();
+    struct Timer { std::chrono::steady_clock::time_point t0; unsigned top; ~Timer(){ if (std::getenv("TNNMG_DEBUG")) std::cerr << "        truncate " << top << " " << std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count() << std::endl;} } timer{t0, top};
     Implementation &mg = *implementation;
     mg.top             = top;
     mg.mask            = mask;
@@ -464,6 +469,8 @@ namespace unilateral::lcp
                             const unsigned int max_cycles)
   {
     Implementation &mg = *implementation;
+    const auto t0 = std::chrono::steady_clock::now();
+    struct Timer { std::chrono::steady_clock::time_point t0; unsigned top; ~Timer(){ if (std::getenv("TNNMG_DEBUG")) std::cerr << "        solve " << top << " " << std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count() << std::endl;} } timer{t0, mg.top};
     const Smoother  pre(mg, true), post(mg, false);
     const Transfer  transfer(mg);
     const CoarseSolve coarse(mg);

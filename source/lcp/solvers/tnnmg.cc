@@ -55,6 +55,7 @@ namespace unilateral::lcp
       double       coarse_tolerance   = 1e-6;
       double       reduction          = 1e-3;
       unsigned int cycles             = 20;
+      unsigned int expansions         = 5;
       unsigned int smoothing_steps    = 1;
       bool         nested_iteration   = true;
 
@@ -297,14 +298,33 @@ namespace unilateral::lcp
       return 1;
     }
 
-    /// What one iteration needs from the last: the iterate before its
-    /// correction, its energy and residual, and the Newton direction.
-    struct Correction
+    /// The residual b - A u and the energy -1/2 u^T (b + r) of u.
+    double
+    residual_and_energy(const BlockMatrix  &A,
+                        const LevelProblem &lcp,
+                        const LevelVector  &u,
+                        LevelVector        &r)
     {
-      LevelVector u, r, d;
-      double      energy  = std::numeric_limits<double>::infinity();
-      bool        pending = false;
-    };
+      A.vmult(r.begin(), u.begin());
+      r.sadd(-1, 1, lcp.b);
+      return -0.5 * (u * lcp.b + u * r);
+    }
+
+    /// The free entries of @p v below their bound: held from now on, and
+    /// put on it. Returns how many.
+    unsigned int
+    hold_penetrating(const LevelProblem &lcp, LevelVector &v, LevelVector &mask)
+    {
+      unsigned int count = 0;
+      for (std::size_t i = 0; i < v.size(); ++i)
+        if (mask[i] != 0 && v[i] < lcp.lower[i])
+          {
+            mask[i] = 0;
+            v[i]    = lcp.lower[i];
+            ++count;
+          }
+      return count;
+    }
 
     LevelOutcome
     Tnnmg::iterate(TruncatedMultigrid &mg,
@@ -316,8 +336,7 @@ namespace unilateral::lcp
     {
       const BlockMatrix &A = mg.matrix(level);
       const std::size_t  n = u.size();
-      LevelVector        mask(n), held_before, r(n), d(n);
-      Correction         last;
+      LevelVector        mask(n), held_before, truncated, r(n), d(n), v, rv(n);
       LevelOutcome       outcome;
       const unsigned int limit     = iteration_limit(100);
       double             last_step = std::numeric_limits<double>::infinity();
@@ -330,23 +349,7 @@ namespace unilateral::lcp
           // should hold.
           if (outcome.iterations > 1 || !carried)
             projected_gauss_seidel(A, lcp, u);
-          A.vmult(r.begin(), u.begin());
-          r.sadd(-1, 1, lcp.b);
-          ++outcome.products;
-          double energy = -0.5 * (u * lcp.b + u * r);
-          if (last.pending && energy > last.energy)
-            {
-              // The projected Newton step raised the energy even after
-              // smoothing: the line search from where it started instead.
-              u = last.u;
-              outcome.products += line_search(A, lcp, last.r, last.d, u);
-              projected_gauss_seidel(A, lcp, u);
-              A.vmult(r.begin(), u.begin());
-              r.sadd(-1, 1, lcp.b);
-              ++outcome.products;
-              energy = -0.5 * (u * lcp.b + u * r);
-              ++outcome.rejected;
-            }
+          const double energy = residual_and_energy(A, lcp, u, r);
           // Held: at the bound, or no unknown at all.
           outcome.held = 0;
           for (std::size_t i = 0; i < n; ++i)
@@ -356,42 +359,65 @@ namespace unilateral::lcp
             }
           const bool same_set = held_before.size() == n && mask == held_before;
           if (!same_set)
+            last_step = std::numeric_limits<double>::infinity();
+          held_before = mask;
+          if (truncated.size() != n || !(truncated == mask))
             {
               mg.truncate(level, mask);
-              last_step = std::numeric_limits<double>::infinity();
+              truncated = mask;
             }
-          held_before = mask;
           r.scale(mask);
           outcome.cycles += mg.solve(d, r, options.reduction, options.cycles);
-          ++outcome.products;
+          outcome.products += 2;
 
-          // The projected Newton step, judged after the next smoothing.
-          last.u       = u;
-          last.r       = r;
-          last.d       = d;
-          last.energy  = energy;
-          last.pending = true;
-          bool clipped = false;
-          for (std::size_t i = 0; i < n; ++i)
-            if (u[i] + d[i] < lcp.lower[i])
-              {
-                u[i]    = lcp.lower[i];
-                clipped = true;
-              }
-            else
-              u[i] += d[i];
+          // The Newton step; where it crosses bounds, those are held too
+          // and the step is taken again, until it crosses none.
+          v = u;
+          v += d;
+          unsigned int expansions = 0;
+          while (hold_penetrating(lcp, v, truncated) > 0)
+            {
+              ++expansions;
+              mg.truncate(level, truncated);
+              residual_and_energy(A, lcp, v, rv);
+              rv.scale(truncated);
+              LevelVector dv;
+              outcome.cycles +=
+                mg.solve(dv, rv, options.reduction, options.cycles);
+              v += dv;
+              ++outcome.products;
+              if (expansions == options.expansions)
+                {
+                  for (std::size_t i = 0; i < n; ++i)
+                    v[i] = std::max(v[i], lcp.lower[i]);
+                  break;
+                }
+            }
+          // Taken if the energy did not rise; else the line search.
+          LevelVector step = v;
+          step -= u;
+          if (expansions > 0 && residual_and_energy(A, lcp, v, rv) > energy)
+            {
+              step = u;
+              line_search(A, lcp, r, d, step);
+              step -= u;
+              ++outcome.rejected;
+              ++outcome.products;
+            }
+          u += step;
+          ++outcome.products;
           const double size     = u.linfty_norm();
-          const double relative = d.linfty_norm() / (size > 0 ? size : 1);
+          const double relative = step.linfty_norm() / (size > 0 ? size : 1);
           if (std::getenv("TNNMG_DEBUG"))
             std::cerr << "      it " << outcome.iterations << " held "
                       << outcome.held << (same_set ? " same" : " changed")
-                      << (clipped ? " clipped" : "") << " step " << relative
+                      << " expansions " << expansions << " step " << relative
                       << " residual " << r.linfty_norm() << " energy "
                       << energy << " cycles " << outcome.cycles << std::endl;
           // Done when the held set stays, the Newton step crosses no
           // bound, and it is below the tolerance or no longer falls (the
           // rounding floor of A u): that step lowered the energy.
-          if (same_set && !clipped &&
+          if (same_set && expansions == 0 &&
               (relative <= tolerance || relative > 0.5 * last_step))
             {
               outcome.converged = true;
