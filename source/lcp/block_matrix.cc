@@ -221,6 +221,49 @@ namespace unilateral::lcp
     return result;
   }
 
+  void
+  BlockMatrix::galerkin_rows(const BlockMatrix        &A,
+                             const BlockMatrix        &P,
+                             const BlockMatrix        &P_transpose,
+                             const std::vector<Index> &rows)
+  {
+    std::vector<Index> position(n_columns(), -1);
+    for (const Index I : rows)
+      {
+        for (Index p = row_start[I]; p < row_start[I + 1]; ++p)
+          {
+            blocks[p].setZero();
+            position[column[p]] = p;
+          }
+        for (Index a = P_transpose.row_start[I];
+             a < P_transpose.row_start[I + 1];
+             ++a)
+          {
+            const Index i = P_transpose.column[a];
+            for (Index p = A.row_start[i]; p < A.row_start[i + 1]; ++p)
+              {
+                const Block left = P_transpose.blocks[a] * A.blocks[p];
+                const Index j    = A.column[p];
+                for (Index b = P.row_start[j]; b < P.row_start[j + 1]; ++b)
+                  blocks[position[P.column[b]]].noalias() +=
+                    left * P.blocks[b];
+              }
+          }
+        for (Index p = row_start[I]; p < row_start[I + 1]; ++p)
+          position[column[p]] = -1;
+      }
+  }
+
+  Index
+  BlockMatrix::position(const Index i, const Index j) const
+  {
+    return static_cast<Index>(
+      std::lower_bound(column.begin() + row_start[i],
+                       column.begin() + row_start[i + 1],
+                       j) -
+      column.begin());
+  }
+
   BlockMatrix
   BlockMatrix::rows_masked(const double *mask) const
   {

@@ -140,8 +140,19 @@ namespace unilateral::lcp
                                  restrictions[from_level - 1];
     }
 
+    /// Whether truncate() ran (the levels below the top are truncated).
+    bool truncated = false;
+
     void
     factorise_coarsest();
+
+    /// The truncated levels built anew for @p top and @p mask.
+    void
+    truncate_fully(unsigned int top, const LevelVector &mask);
+
+    /// The truncated levels updated where @p mask differs from the last.
+    void
+    update_truncation(const LevelVector &mask);
   };
 
   namespace
@@ -422,38 +433,129 @@ namespace unilateral::lcp
     return result;
   }
 
+  namespace
+  {
+    const double all_entries[B] = {1, 1, 1, 1};
+
+    /// The nodes of the coarser level that @p rows of the finer level
+    /// (and their neighbours in @p A) are interpolated from: the rows of
+    /// P^T A P that change with those of A or of P.
+    std::vector<Index>
+    coarse_rows(const std::vector<Index> &rows,
+                const BlockMatrix        &A,
+                const BlockMatrix        &P)
+    {
+      std::vector<char> touched(A.n_rows(), 0), marked(P.n_columns(), 0);
+      for (const Index k : rows)
+        for (Index p = A.row_start[k]; p < A.row_start[k + 1]; ++p)
+          touched[A.column[p]] = 1;
+      std::vector<Index> result;
+      for (Index i = 0; i < A.n_rows(); ++i)
+        if (touched[i])
+          for (Index p = P.row_start[i]; p < P.row_start[i + 1]; ++p)
+            if (!marked[P.column[p]])
+              {
+                marked[P.column[p]] = 1;
+                result.push_back(P.column[p]);
+              }
+      return result;
+    }
+  } // namespace
+
+  void
+  TruncatedMultigrid::Implementation::truncate_fully(const unsigned int new_top,
+                                                     const LevelVector &new_mask)
+  {
+    top  = new_top;
+    mask = new_mask;
+    for (unsigned int level = 0; level < operators.n_levels(); ++level)
+      operators[level].mask = level == top ? &mask : nullptr;
+    if (top > 0)
+      {
+        top_prolongation = prolongations[top - 1].rows_masked(mask.begin());
+        top_restriction  = top_prolongation.transpose();
+        matrices[top - 1] =
+          matrices[top].galerkin(top_prolongation, top_restriction);
+        for (unsigned int level = top - 1; level-- > 0;)
+          matrices[level] = matrices[level + 1].galerkin(prolongations[level],
+                                                         restrictions[level]);
+      }
+    for (unsigned int level = 0; level <= top; ++level)
+      {
+        const BlockMatrix  &A = matrices[level];
+        std::vector<Block> &D = inverses[level];
+        D.resize(A.n_rows());
+        for (Index i = 0; i < A.n_rows(); ++i)
+          D[i] = masked_inverse(A.diagonal_block(i),
+                                level == top ? mask.begin() + B * i :
+                                               all_entries);
+      }
+    factorise_coarsest();
+  }
+
+  void
+  TruncatedMultigrid::Implementation::update_truncation(
+    const LevelVector &new_mask)
+  {
+    // The top level's nodes whose mask changed: their rows of P~ and
+    // columns of P~^T, and their smoothers.
+    const BlockMatrix &P = prolongations.empty() ? matrices[top] :
+                                                   prolongations[top - 1];
+    std::vector<Index> changed;
+    for (Index k = 0; k < matrices[top].n_rows(); ++k)
+      {
+        bool same = true;
+        for (int c = 0; c < B; ++c)
+          same = same && mask[B * k + c] == new_mask[B * k + c];
+        if (same)
+          continue;
+        changed.push_back(k);
+        for (int c = 0; c < B; ++c)
+          mask[B * k + c] = new_mask[B * k + c];
+        inverses[top][k] = masked_inverse(matrices[top].diagonal_block(k),
+                                          mask.begin() + B * k);
+        if (top == 0)
+          continue;
+        const Eigen::Map<const NodeVector> m(mask.begin() + B * k);
+        for (Index p = P.row_start[k]; p < P.row_start[k + 1]; ++p)
+          {
+            top_prolongation.blocks[p] = m.asDiagonal() * P.blocks[p];
+            top_restriction.blocks[top_restriction.position(P.column[p], k)] =
+              top_prolongation.blocks[p].transpose();
+          }
+      }
+    if (changed.empty())
+      return;
+    // The coarse levels' rows that depend on them, level by level.
+    std::vector<Index> rows = changed;
+    for (unsigned int level = top; level-- > 0;)
+      {
+        const bool         truncated_transfer = level + 1 == top;
+        const BlockMatrix &Pl =
+          truncated_transfer ? top_prolongation : prolongations[level];
+        const BlockMatrix &Rl =
+          truncated_transfer ? top_restriction : restrictions[level];
+        rows = coarse_rows(rows, matrices[level + 1], Pl);
+        matrices[level].galerkin_rows(matrices[level + 1], Pl, Rl, rows);
+        for (const Index I : rows)
+          inverses[level][I] =
+            masked_inverse(matrices[level].diagonal_block(I), all_entries);
+      }
+    factorise_coarsest();
+  }
+
   void
   TruncatedMultigrid::truncate(const unsigned int top, const LevelVector &mask)
   {
     const auto t0 = std::chrono::steady_clock::now();
     struct Timer { std::chrono::steady_clock::time_point t0; unsigned top; ~Timer(){ if (std::getenv("TNNMG_DEBUG")) std::cerr << "        truncate " << top << " " << std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count() << std::endl;} } timer{t0, top};
     Implementation &mg = *implementation;
-    mg.top             = top;
-    mg.mask            = mask;
-    for (unsigned int level = 0; level < n_levels(); ++level)
-      mg.operators[level].mask = level == top ? &mg.mask : nullptr;
-    if (top > 0)
-      {
-        mg.top_prolongation =
-          mg.prolongations[top - 1].rows_masked(mask.begin());
-        mg.top_restriction = mg.top_prolongation.transpose();
-        mg.matrices[top - 1] =
-          mg.matrices[top].galerkin(mg.top_prolongation, mg.top_restriction);
-        for (unsigned int level = top - 1; level-- > 0;)
-          mg.matrices[level] = mg.matrices[level + 1].galerkin(
-            mg.prolongations[level], mg.restrictions[level]);
-      }
-    for (unsigned int level = 0; level <= top; ++level)
-      {
-        const BlockMatrix  &A = mg.matrices[level];
-        std::vector<Block> &D = mg.inverses[level];
-        D.resize(A.n_rows());
-        const double all[B] = {1, 1, 1, 1};
-        for (Index i = 0; i < A.n_rows(); ++i)
-          D[i] = masked_inverse(A.diagonal_block(i),
-                                level == top ? mask.begin() + B * i : all);
-      }
-    mg.factorise_coarsest();
+    // Within one top level only what changed is rebuilt.
+    if (mg.truncated && top == mg.top)
+      mg.update_truncation(mask);
+    else
+      mg.truncate_fully(top, mask);
+    mg.truncated = true;
   }
 
   void

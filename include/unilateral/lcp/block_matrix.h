@@ -96,6 +96,21 @@ namespace unilateral::lcp
     BlockMatrix
     galerkin(const BlockMatrix &P, const BlockMatrix &P_transpose) const;
 
+    /**
+     * Recompute the rows @p rows of this matrix, P^T A P (made by
+     * galerkin() from the same P's pattern), after A or P changed there;
+     * the pattern stays (the changes only zero contributions).
+     */
+    void
+    galerkin_rows(const BlockMatrix        &A,
+                  const BlockMatrix        &P,
+                  const BlockMatrix        &P_transpose,
+                  const std::vector<Index> &rows);
+
+    /// The position of block (i, j), which must be in the pattern.
+    Index
+    position(Index i, Index j) const;
+
     /// The same matrix with the rows of the entries where @p mask is 0
     /// zeroed (M P for a diagonal 0/1 mask M, node layout).
     BlockMatrix

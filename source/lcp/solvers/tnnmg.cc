@@ -32,6 +32,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -55,6 +56,8 @@ namespace unilateral::lcp
       double       coarse_tolerance   = 1e-6;
       double       reduction          = 1e-3;
       unsigned int cycles             = 20;
+      unsigned int search_cycles      = std::getenv("SC") ? std::atoi(std::getenv("SC")) : 20;
+      double final_reduction = std::getenv("FR") ? std::atof(std::getenv("FR")) : 1e-3;
       unsigned int expansions         = 5;
       unsigned int smoothing_steps    = 1;
       bool         nested_iteration   = true;
@@ -367,7 +370,12 @@ namespace unilateral::lcp
               truncated = mask;
             }
           r.scale(mask);
-          outcome.cycles += mg.solve(d, r, options.reduction, options.cycles);
+          // Loose while the held set moves, tight once it stays.
+          const double reduction =
+            same_set ? options.final_reduction : options.reduction;
+          const unsigned int cycles =
+            same_set ? options.cycles : options.search_cycles;
+          outcome.cycles += mg.solve(d, r, reduction, cycles);
           outcome.products += 2;
 
           // The Newton step; where it crosses bounds, those are held too
@@ -383,7 +391,7 @@ namespace unilateral::lcp
               rv.scale(truncated);
               LevelVector dv;
               outcome.cycles +=
-                mg.solve(dv, rv, options.reduction, options.cycles);
+                mg.solve(dv, rv, options.reduction, options.search_cycles);
               v += dv;
               ++outcome.products;
               if (expansions == options.expansions)
@@ -494,6 +502,7 @@ namespace unilateral::lcp
             start_from_coarser(mg, level, coarse_lcp, lcp, u);
           for (std::size_t i = 0; i < u.size(); ++i)
             u[i] = std::max(u[i], lcp.lower[i]);
+          LevelVector start_u = u;
           outcome = iterate(mg,
                             level,
                             lcp,
@@ -501,6 +510,20 @@ namespace unilateral::lcp
                             level == finest ? options.tolerance :
                                               options.coarse_tolerance,
                             level > first);
+          if (std::getenv("TNNMG_DEBUG"))
+            {
+              unsigned only_start = 0, only_final = 0, both = 0, near = 0;
+              for (std::size_t k = 0; k < lcp.bounded.size(); ++k)
+                {
+                  const int c = lcp.bounded[k];
+                  if (c < 0) continue;
+                  const std::size_t i = B * k + c;
+                  const bool s0 = start_u[i] <= lcp.lower[i], s1 = u[i] <= lcp.lower[i];
+                  only_start += s0 && !s1; only_final += s1 && !s0; both += s0 && s1;
+                  if (s1 && !s0 && start_u[i] - lcp.lower[i] < 1e-4) ++near;
+                }
+              std::cerr << "      start vs final: both " << both << " only start " << only_start << " only final " << only_final << " (of which start gap < 1e-4: " << near << ")" << std::endl;
+            }
           coarse_lcp = std::move(lcp);
           report.counters.cg_iterations += outcome.cycles;
           report.counters.matrix_vector_products += outcome.products;
