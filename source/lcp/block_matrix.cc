@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 
 namespace unilateral::lcp
@@ -47,11 +48,10 @@ namespace unilateral::lcp
         });
         for (const Index k : order)
           {
-            matrix.column.push_back(columns[k]);
-            matrix.blocks.push_back(blocks[k]);
+            matrix.append(columns[k], blocks[k]);
             position[columns[k]] = -1;
           }
-        matrix.row_start.push_back(static_cast<Index>(matrix.column.size()));
+        matrix.end_row();
         columns.clear();
         blocks.clear();
       }
@@ -63,6 +63,27 @@ namespace unilateral::lcp
       std::vector<Index> order;
     };
   } // namespace
+
+  std::size_t
+  BlockTable::Hash::operator()(const Key &key) const
+  {
+    std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+    for (const std::uint64_t word : key)
+      h = (h ^ word) * 0x100000001b3ULL + (h >> 29);
+    return static_cast<std::size_t>(h);
+  }
+
+  BlockTable::Id
+  BlockTable::intern(const Block &block)
+  {
+    Key key;
+    std::memcpy(key.data(), block.data(), sizeof(Key));
+    const auto [entry, added] =
+      index.try_emplace(key, static_cast<Id>(blocks.size()));
+    if (added)
+      blocks.push_back(block);
+    return entry->second;
+  }
 
   BlockMatrix::NodeMap
   BlockMatrix::node_map(const std::vector<Index> &nodes,
@@ -129,22 +150,29 @@ namespace unilateral::lcp
   {
     diagonal.resize(n_rows());
     for (Index i = 0; i < n_rows(); ++i)
-      diagonal[i] = static_cast<Index>(
-        std::lower_bound(column.begin() + row_start[i],
-                         column.begin() + row_start[i + 1],
-                         i) -
-        column.begin());
+      diagonal[i] = position(i, i);
+  }
+
+  Index
+  BlockMatrix::position(const Index i, const Index j) const
+  {
+    return static_cast<Index>(
+      std::lower_bound(column.begin() + row_start[i],
+                       column.begin() + row_start[i + 1],
+                       j) -
+      column.begin());
   }
 
   void
   BlockMatrix::vmult(double *y, const double *x) const
   {
+    const Block *blocks = table.data();
     for (Index i = 0; i < n_rows(); ++i)
       {
         NodeVector sum = NodeVector::Zero();
         for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
           sum.noalias() +=
-            blocks[p] * Eigen::Map<const NodeVector>(x + size * column[p]);
+            blocks[ids[p]] * Eigen::Map<const NodeVector>(x + size * column[p]);
         Eigen::Map<NodeVector>(y + size * i) = sum;
       }
   }
@@ -152,12 +180,13 @@ namespace unilateral::lcp
   void
   BlockMatrix::vmult_add(double *y, const double *x) const
   {
+    const Block *blocks = table.data();
     for (Index i = 0; i < n_rows(); ++i)
       {
         NodeVector sum = NodeVector::Zero();
         for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
           sum.noalias() +=
-            blocks[p] * Eigen::Map<const NodeVector>(x + size * column[p]);
+            blocks[ids[p]] * Eigen::Map<const NodeVector>(x + size * column[p]);
         Eigen::Map<NodeVector>(y + size * i) += sum;
       }
   }
@@ -165,7 +194,11 @@ namespace unilateral::lcp
   BlockMatrix
   BlockMatrix::transpose() const
   {
+    // The transposed table: entry k is block k transposed, so the ids
+    // carry over.
     BlockMatrix result;
+    for (std::size_t k = 0; k < table.size(); ++k)
+      result.table.intern(table[static_cast<Id>(k)].transpose());
     result.columns = n_rows();
     result.row_start.assign(columns + 1, 0);
     for (const Index j : column)
@@ -174,15 +207,15 @@ namespace unilateral::lcp
                      result.row_start.end(),
                      result.row_start.begin());
     result.column.resize(column.size());
-    result.blocks.resize(blocks.size());
+    result.ids.resize(ids.size());
     std::vector<Index> next(result.row_start.begin(),
                             result.row_start.end() - 1);
     for (Index i = 0; i < n_rows(); ++i)
       for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
         {
-          const Index q      = next[column[p]]++;
-          result.column[q]   = i;
-          result.blocks[q]   = blocks[p].transpose();
+          const Index q    = next[column[p]]++;
+          result.column[q] = i;
+          result.ids[q]    = ids[p];
         }
     if (result.n_rows() == result.columns && columns == n_rows() &&
         !diagonal.empty())
@@ -209,10 +242,10 @@ namespace unilateral::lcp
             const Index i = P_transpose.column[a];
             for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
               {
-                const Block left = P_transpose.blocks[a] * blocks[p];
+                const Block left = P_transpose.block(a) * block(p);
                 const Index j    = column[p];
                 for (Index b = P.row_start[j]; b < P.row_start[j + 1]; ++b)
-                  row[P.column[b]].noalias() += left * P.blocks[b];
+                  row[P.column[b]].noalias() += left * P.block(b);
               }
           }
         row.flush(result);
@@ -228,13 +261,12 @@ namespace unilateral::lcp
                              const std::vector<Index> &rows)
   {
     std::vector<Index> position(n_columns(), -1);
+    std::vector<Block> sums;
     for (const Index I : rows)
       {
+        sums.assign(row_start[I + 1] - row_start[I], Block::Zero());
         for (Index p = row_start[I]; p < row_start[I + 1]; ++p)
-          {
-            blocks[p].setZero();
-            position[column[p]] = p;
-          }
+          position[column[p]] = p - row_start[I];
         for (Index a = P_transpose.row_start[I];
              a < P_transpose.row_start[I + 1];
              ++a)
@@ -242,26 +274,18 @@ namespace unilateral::lcp
             const Index i = P_transpose.column[a];
             for (Index p = A.row_start[i]; p < A.row_start[i + 1]; ++p)
               {
-                const Block left = P_transpose.blocks[a] * A.blocks[p];
+                const Block left = P_transpose.block(a) * A.block(p);
                 const Index j    = A.column[p];
                 for (Index b = P.row_start[j]; b < P.row_start[j + 1]; ++b)
-                  blocks[position[P.column[b]]].noalias() +=
-                    left * P.blocks[b];
+                  sums[position[P.column[b]]].noalias() += left * P.block(b);
               }
           }
         for (Index p = row_start[I]; p < row_start[I + 1]; ++p)
-          position[column[p]] = -1;
+          {
+            set_block(p, sums[p - row_start[I]]);
+            position[column[p]] = -1;
+          }
       }
-  }
-
-  Index
-  BlockMatrix::position(const Index i, const Index j) const
-  {
-    return static_cast<Index>(
-      std::lower_bound(column.begin() + row_start[i],
-                       column.begin() + row_start[i + 1],
-                       j) -
-      column.begin());
   }
 
   BlockMatrix
@@ -271,8 +295,10 @@ namespace unilateral::lcp
     for (Index i = 0; i < n_rows(); ++i)
       {
         const Eigen::Map<const NodeVector> m(mask + size * i);
+        if (m.minCoeff() == 1)
+          continue;
         for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
-          result.blocks[p] = m.asDiagonal() * blocks[p];
+          result.set_block(p, m.asDiagonal() * block(p));
       }
     return result;
   }
@@ -294,5 +320,33 @@ namespace unilateral::lcp
     const Block inverse =
       Eigen::LDLT<Block>(reduced).solve(Block::Identity());
     return kept.asDiagonal() * inverse * kept.asDiagonal();
+  }
+
+  void
+  DiagonalInverses::set(const BlockMatrix &A,
+                        const Index        i,
+                        const double      *mask)
+  {
+    const double  all[BlockMatrix::size] = {1, 1, 1, 1};
+    const double *m                      = mask != nullptr ? mask : all;
+    // The same block with the same mask has the same inverse.
+    std::uint64_t key = A.block_id(A.diagonal[i]);
+    for (int c = 0; c < BlockMatrix::size; ++c)
+      key = 2 * key + (m[c] != 0 ? 1 : 0);
+    const auto [entry, added] = known.try_emplace(key, 0);
+    if (added)
+      entry->second = table.intern(masked_inverse(A.diagonal_block(i), m));
+    ids[i] = entry->second;
+  }
+
+  void
+  DiagonalInverses::set_all(const BlockMatrix &A, const double *mask)
+  {
+    // A new matrix: its table's indices mean other blocks now.
+    known.clear();
+    table = BlockTable();
+    ids.resize(A.n_rows());
+    for (Index i = 0; i < A.n_rows(); ++i)
+      set(A, i, mask != nullptr ? mask + BlockMatrix::size * i : nullptr);
   }
 } // namespace unilateral::lcp

@@ -81,21 +81,18 @@ namespace unilateral::lcp
     /// One block Gauss-Seidel sweep for A x = rhs, in residual form:
     /// x_i += D_i^+ (rhs - A x)_i node by node (D_i^+ zero where held).
     void
-    block_gauss_seidel(const BlockMatrix        &A,
-                       const std::vector<Block> &inverses,
-                       double                   *x,
-                       const double             *rhs,
-                       const bool                forward)
+    block_gauss_seidel(const BlockMatrix      &A,
+                       const DiagonalInverses &inverses,
+                       double                 *x,
+                       const double           *rhs,
+                       const bool              forward)
     {
       const Index n = A.n_rows();
       for (Index step = 0; step < n; ++step)
         {
           const Index i = forward ? step : n - 1 - step;
-          NodeVector  r = Eigen::Map<const NodeVector>(rhs + B * i);
-          for (Index p = A.row_start[i]; p < A.row_start[i + 1]; ++p)
-            r.noalias() -=
-              A.blocks[p] * Eigen::Map<const NodeVector>(x + B * A.column[p]);
-          Eigen::Map<NodeVector>(x + B * i) += inverses[i] * r;
+          Eigen::Map<NodeVector>(x + B * i) +=
+            inverses[i] * A.row_residual(i, rhs, x);
         }
     }
   } // namespace
@@ -114,7 +111,7 @@ namespace unilateral::lcp
     unsigned int                      block_size;
     dealii::MGLevelObject<BlockMatrix>         matrices;
     std::vector<BlockMatrix>                   prolongations, restrictions;
-    dealii::MGLevelObject<std::vector<Block>>  inverses;
+    dealii::MGLevelObject<DiagonalInverses>    inverses;
     dealii::MGLevelObject<LevelOperator>       operators;
     dealii::mg::Matrix<LevelVector>            level_matrices;
 
@@ -142,6 +139,13 @@ namespace unilateral::lcp
 
     /// Whether truncate() ran (the levels below the top are truncated).
     bool truncated = false;
+
+    /// deal.II's cycle on levels 0..top and its parts, made anew when the
+    /// top changes (the cycle keeps its level vectors between solves).
+    std::unique_ptr<dealii::MGSmootherBase<LevelVector>>   pre, post;
+    std::unique_ptr<dealii::MGTransferBase<LevelVector>>   transfer;
+    std::unique_ptr<dealii::MGCoarseGridBase<LevelVector>> coarse;
+    std::unique_ptr<dealii::Multigrid<LevelVector>>        multigrid;
 
     void
     factorise_coarsest();
@@ -335,8 +339,8 @@ namespace unilateral::lcp
           for (int b = 0; b < B; ++b)
             {
               const Index row = B * i + a, column = B * A0.column[p] + b;
-              if (kept[row] && kept[column] && A0.blocks[p](a, b) != 0)
-                entries.emplace_back(row, column, A0.blocks[p](a, b));
+              if (kept[row] && kept[column] && A0.block(p)(a, b) != 0)
+                entries.emplace_back(row, column, A0.block(p)(a, b));
             }
     for (Index i = 0; i < n; ++i)
       if (!kept[i])
@@ -435,8 +439,6 @@ namespace unilateral::lcp
 
   namespace
   {
-    const double all_entries[B] = {1, 1, 1, 1};
-
     /// The nodes of the coarser level that @p rows of the finer level
     /// (and their neighbours in @p A) are interpolated from: the rows of
     /// P^T A P that change with those of A or of P.
@@ -481,15 +483,8 @@ namespace unilateral::lcp
                                                          restrictions[level]);
       }
     for (unsigned int level = 0; level <= top; ++level)
-      {
-        const BlockMatrix  &A = matrices[level];
-        std::vector<Block> &D = inverses[level];
-        D.resize(A.n_rows());
-        for (Index i = 0; i < A.n_rows(); ++i)
-          D[i] = masked_inverse(A.diagonal_block(i),
-                                level == top ? mask.begin() + B * i :
-                                               all_entries);
-      }
+      inverses[level].set_all(matrices[level],
+                              level == top ? mask.begin() : nullptr);
     factorise_coarsest();
   }
 
@@ -512,16 +507,15 @@ namespace unilateral::lcp
         changed.push_back(k);
         for (int c = 0; c < B; ++c)
           mask[B * k + c] = new_mask[B * k + c];
-        inverses[top][k] = masked_inverse(matrices[top].diagonal_block(k),
-                                          mask.begin() + B * k);
+        inverses[top].set(matrices[top], k, mask.begin() + B * k);
         if (top == 0)
           continue;
         const Eigen::Map<const NodeVector> m(mask.begin() + B * k);
         for (Index p = P.row_start[k]; p < P.row_start[k + 1]; ++p)
           {
-            top_prolongation.blocks[p] = m.asDiagonal() * P.blocks[p];
-            top_restriction.blocks[top_restriction.position(P.column[p], k)] =
-              top_prolongation.blocks[p].transpose();
+            top_prolongation.set_block(p, m.asDiagonal() * P.block(p));
+            top_restriction.set_block(top_restriction.position(P.column[p], k),
+                                      top_prolongation.block(p).transpose());
           }
       }
     if (changed.empty())
@@ -538,8 +532,7 @@ namespace unilateral::lcp
         rows = coarse_rows(rows, matrices[level + 1], Pl);
         matrices[level].galerkin_rows(matrices[level + 1], Pl, Rl, rows);
         for (const Index I : rows)
-          inverses[level][I] =
-            masked_inverse(matrices[level].diagonal_block(I), all_entries);
+          inverses[level].set(matrices[level], I, nullptr);
       }
     factorise_coarsest();
   }
@@ -554,7 +547,24 @@ namespace unilateral::lcp
     if (mg.truncated && top == mg.top)
       mg.update_truncation(mask);
     else
-      mg.truncate_fully(top, mask);
+      {
+        mg.truncate_fully(top, mask);
+        mg.multigrid.reset();
+        mg.pre      = std::make_unique<Smoother>(mg, true);
+        mg.post     = std::make_unique<Smoother>(mg, false);
+        mg.transfer = std::make_unique<Transfer>(mg);
+        mg.coarse   = std::make_unique<CoarseSolve>(mg);
+        mg.multigrid =
+          std::make_unique<dealii::Multigrid<LevelVector>>(mg.level_matrices,
+                                                           *mg.coarse,
+                                                           *mg.transfer,
+                                                           *mg.pre,
+                                                           *mg.post,
+                                                           0,
+                                                           top);
+        for (unsigned int level = 0; level <= top; ++level)
+          mg.multigrid->defect[level].reinit(size(level));
+      }
     mg.truncated = true;
   }
 
@@ -573,14 +583,7 @@ namespace unilateral::lcp
     Implementation &mg = *implementation;
     const auto t0 = std::chrono::steady_clock::now();
     struct Timer { std::chrono::steady_clock::time_point t0; unsigned top; ~Timer(){ if (std::getenv("TNNMG_DEBUG")) std::cerr << "        solve " << top << " " << std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count() << std::endl;} } timer{t0, mg.top};
-    const Smoother  pre(mg, true), post(mg, false);
-    const Transfer  transfer(mg);
-    const CoarseSolve coarse(mg);
-    dealii::Multigrid<LevelVector> multigrid(
-      mg.level_matrices, coarse, transfer, pre, post, 0, mg.top);
-    for (unsigned int level = 0; level <= mg.top; ++level)
-      multigrid.defect[level].reinit(size(level));
-    const Cycle cycle(multigrid, mg.top);
+    const Cycle cycle(*mg.multigrid, mg.top);
 
     dealii::ReductionControl control(max_cycles, 1e-300, reduction);
     dealii::SolverCG<LevelVector> cg(control);

@@ -4,10 +4,60 @@
 
 #include <Eigen/Core>
 
+#include <array>
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace unilateral::lcp
 {
+  /**
+   * 4 x 4 blocks, each distinct one stored once: a block is named by its
+   * index here. Matrices of a uniform mesh repeat a few dozen blocks
+   * millions of times (every interior node of the plate has the same
+   * couplings, and so do its Galerkin coarse levels), so a product with
+   * one reads an index per block instead of 128 bytes.
+   */
+  class BlockTable
+  {
+  public:
+    using Block = Eigen::Matrix4d;
+    using Id    = std::uint32_t;
+
+    /// The index of @p block, added if it is new (bitwise comparison).
+    Id
+    intern(const Block &block);
+
+    const Block &
+    operator[](const Id id) const
+    {
+      return blocks[id];
+    }
+
+    const Block *
+    data() const
+    {
+      return blocks.data();
+    }
+
+    std::size_t
+    size() const
+    {
+      return blocks.size();
+    }
+
+  private:
+    using Key = std::array<std::uint64_t, 16>;
+    struct Hash
+    {
+      std::size_t
+      operator()(const Key &key) const;
+    };
+
+    std::vector<Block>                blocks;
+    std::unordered_map<Key, Id, Hash> index;
+  };
+
   /**
    * A sparse matrix of 4 x 4 blocks in block compressed rows: one block row
    * and column per node of a mesh, for the multigrid methods
@@ -16,17 +66,14 @@ namespace unilateral::lcp
    * padded with zeros where a node has fewer (a clamped DOF, or a block
    * size below 4). In a square matrix such a padding entry has a zero row
    * and column; the smoothers and the coarse solve read a zero diagonal
-   * entry as "no unknown".
-   *
-   * Eigen's sparse matrices hold scalars: a node's 16 couplings cost 16
-   * index lookups there and one here, and a block Gauss-Seidel step needs
-   * the block anyway.
+   * entry as "no unknown". The blocks are kept in a BlockTable.
    */
   class BlockMatrix
   {
   public:
     static constexpr int size = 4;
-    using Block             = Eigen::Matrix4d;
+    using Block             = BlockTable::Block;
+    using Id                = BlockTable::Id;
     using NodeVector        = Eigen::Vector4d;
 
     /// Per unknown of one side: its node and its place in the node.
@@ -73,8 +120,40 @@ namespace unilateral::lcp
     std::size_t
     n_blocks() const
     {
-      return blocks.size();
+      return column.size();
     }
+
+    /// The block at position @p p.
+    const Block &
+    block(const Index p) const
+    {
+      return table[ids[p]];
+    }
+
+    /// Its index in the matrix's table (equal blocks, equal indices).
+    Id
+    block_id(const Index p) const
+    {
+      return ids[p];
+    }
+
+    /// The block at position @p p set to @p value.
+    void
+    set_block(const Index p, const Block &value)
+    {
+      ids[p] = table.intern(value);
+    }
+
+    /// The diagonal block of row i.
+    const Block &
+    diagonal_block(const Index i) const
+    {
+      return block(diagonal[i]);
+    }
+
+    /// The position of block (i, j), which must be in the pattern.
+    Index
+    position(Index i, Index j) const;
 
     /// y = this x (node layout).
     void
@@ -83,6 +162,18 @@ namespace unilateral::lcp
     /// y += this x.
     void
     vmult_add(double *y, const double *x) const;
+
+    /// (b - this x) in node @p i's entries.
+    NodeVector
+    row_residual(Index i, const double *b, const double *x) const
+    {
+      NodeVector   r      = Eigen::Map<const NodeVector>(b + size * i);
+      const Block *blocks = table.data();
+      for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
+        r.noalias() -= blocks[ids[p]] *
+                       Eigen::Map<const NodeVector>(x + size * column[p]);
+      return r;
+    }
 
     /// The transpose.
     BlockMatrix
@@ -107,32 +198,37 @@ namespace unilateral::lcp
                   const BlockMatrix        &P_transpose,
                   const std::vector<Index> &rows);
 
-    /// The position of block (i, j), which must be in the pattern.
-    Index
-    position(Index i, Index j) const;
+    /// Building row by row: a block at the end of the current row, and
+    /// the end of that row.
+    void
+    append(const Index j, const Block &value)
+    {
+      column.push_back(j);
+      ids.push_back(table.intern(value));
+    }
+
+    void
+    end_row()
+    {
+      row_start.push_back(static_cast<Index>(column.size()));
+    }
 
     /// The same matrix with the rows of the entries where @p mask is 0
     /// zeroed (M P for a diagonal 0/1 mask M, node layout).
     BlockMatrix
     rows_masked(const double *mask) const;
 
-    /// The diagonal block of row i.
-    const Block &
-    diagonal_block(const Index i) const
-    {
-      return blocks[diagonal[i]];
-    }
-
-    /// Block compressed rows: row i's blocks are row_start[i] ...
-    /// row_start[i + 1] - 1, columns increasing.
+    /// Block compressed rows: row i's blocks are at the positions
+    /// row_start[i] ... row_start[i + 1] - 1, columns increasing.
     std::vector<Index> row_start;
     std::vector<Index> column;
-    std::vector<Block> blocks;
     /// The position of each row's diagonal block (square matrices).
     std::vector<Index> diagonal;
 
   private:
-    Index columns = 0;
+    Index           columns = 0;
+    std::vector<Id> ids;
+    BlockTable      table;
 
     void
     find_diagonal();
@@ -145,4 +241,37 @@ namespace unilateral::lcp
    */
   BlockMatrix::Block
   masked_inverse(const BlockMatrix::Block &block, const double *mask);
+
+  /**
+   * The inverses of a square BlockMatrix's diagonal blocks, masked
+   * (masked_inverse), one per row, each distinct one computed and stored
+   * once.
+   */
+  class DiagonalInverses
+  {
+  public:
+    using Block = BlockMatrix::Block;
+
+    /// Row @p i's inverse for the matrix's diagonal block and @p mask
+    /// (4 entries; null: all 1). The matrix's table must only grow
+    /// between calls (its indices name the blocks here).
+    void
+    set(const BlockMatrix &A, Index i, const double *mask);
+
+    /// Every row's, with @p mask in node layout (null: all 1).
+    void
+    set_all(const BlockMatrix &A, const double *mask);
+
+    const Block &
+    operator[](const Index i) const
+    {
+      return table[ids[i]];
+    }
+
+  private:
+    std::vector<BlockTable::Id> ids;
+    BlockTable                  table;
+    /// (diagonal block's table entry, mask bits) -> inverse.
+    std::unordered_map<std::uint64_t, BlockTable::Id> known;
+  };
 } // namespace unilateral::lcp

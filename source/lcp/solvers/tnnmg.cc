@@ -124,7 +124,7 @@ namespace unilateral::lcp
       /// Per node: its constrained entry (0..3) or -1.
       std::vector<int> bounded;
       /// The inverses of A_l's diagonal blocks.
-      std::vector<Block> inverses;
+      DiagonalInverses inverses;
     };
 
     /// How one level's iteration ended.
@@ -198,12 +198,9 @@ namespace unilateral::lcp
       double *x = u.begin();
       for (Index i = 0; i < A.n_rows(); ++i)
         {
-          NodeVector r = Eigen::Map<const NodeVector>(lcp.b.begin() + B * i);
-          for (Index p = A.row_start[i]; p < A.row_start[i + 1]; ++p)
-            r.noalias() -=
-              A.blocks[p] * Eigen::Map<const NodeVector>(x + B * A.column[p]);
-          const Block &D_inverse = lcp.inverses[i];
-          NodeVector   y = Eigen::Map<const NodeVector>(x + B * i);
+          const NodeVector r         = A.row_residual(i, lcp.b.begin(), x);
+          const Block     &D_inverse = lcp.inverses[i];
+          NodeVector       y = Eigen::Map<const NodeVector>(x + B * i);
           y.noalias() += D_inverse * r;
           const int c = lcp.bounded[i];
           if (c >= 0 && y[c] < lcp.lower[B * i + c])
@@ -258,7 +255,6 @@ namespace unilateral::lcp
       mg.to_nodes(level, marks, bounded_entries);
       const Index n_nodes = mg.size(level) / B;
       lcp.bounded.assign(n_nodes, -1);
-      lcp.inverses.resize(n_nodes);
       for (Index i = 0; i < n_nodes; ++i)
         {
           for (int c = 0; c < B; ++c)
@@ -268,9 +264,8 @@ namespace unilateral::lcp
               if (bounded_entries[B * i + c] != 0)
                 lcp.bounded[i] = c;
             }
-          lcp.inverses[i] = masked_inverse(mg.matrix(level).diagonal_block(i),
-                                           lcp.present.begin() + B * i);
         }
+      lcp.inverses.set_all(mg.matrix(level), lcp.present.begin());
       return lcp;
     }
 
@@ -339,7 +334,8 @@ namespace unilateral::lcp
     {
       const BlockMatrix &A = mg.matrix(level);
       const std::size_t  n = u.size();
-      LevelVector        mask(n), held_before, truncated, r(n), d(n), v, rv(n);
+      LevelVector mask(n), held_before, truncated, r(n), d(n), v(n), rv(n),
+        dv(n), step(n);
       LevelOutcome       outcome;
       const unsigned int limit     = iteration_limit(100);
       double             last_step = std::numeric_limits<double>::infinity();
@@ -389,7 +385,6 @@ namespace unilateral::lcp
               mg.truncate(level, truncated);
               residual_and_energy(A, lcp, v, rv);
               rv.scale(truncated);
-              LevelVector dv;
               outcome.cycles +=
                 mg.solve(dv, rv, options.reduction, options.search_cycles);
               v += dv;
@@ -402,7 +397,7 @@ namespace unilateral::lcp
                 }
             }
           // Taken if the energy did not rise; else the line search.
-          LevelVector step = v;
+          step = v;
           step -= u;
           if (expansions > 0 && residual_and_energy(A, lcp, v, rv) > energy)
             {
