@@ -43,9 +43,11 @@ namespace unilateral::lcp
       {
         order.resize(columns.size());
         std::iota(order.begin(), order.end(), 0);
-        std::sort(order.begin(), order.end(), [&](const Index a, const Index b) {
-          return columns[a] < columns[b];
-        });
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](const Index a, const Index b) {
+                    return columns[a] < columns[b];
+                  });
         for (const Index k : order)
           {
             matrix.append(columns[k], blocks[k]);
@@ -317,15 +319,12 @@ namespace unilateral::lcp
     // kept block is.
     Block reduced = kept.asDiagonal() * block * kept.asDiagonal();
     reduced.diagonal() += NodeVector::Ones() - kept;
-    const Block inverse =
-      Eigen::LDLT<Block>(reduced).solve(Block::Identity());
+    const Block inverse = Eigen::LDLT<Block>(reduced).solve(Block::Identity());
     return kept.asDiagonal() * inverse * kept.asDiagonal();
   }
 
   void
-  DiagonalInverses::set(const BlockMatrix &A,
-                        const Index        i,
-                        const double      *mask)
+  DiagonalInverses::set(const BlockMatrix &A, const Index i, const double *mask)
   {
     const double  all[BlockMatrix::size] = {1, 1, 1, 1};
     const double *m                      = mask != nullptr ? mask : all;

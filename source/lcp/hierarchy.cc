@@ -18,8 +18,8 @@ namespace unilateral::lcp
 
     // Each unknown in one node; at most one constrained unknown per node.
     void
-    check_nodes(const Hierarchy         &hierarchy,
-                const unsigned int       level,
+    check_nodes(const Hierarchy          &hierarchy,
+                const unsigned int        level,
                 const std::vector<Index> &constrained)
     {
       const Hierarchy::Level &data = hierarchy.levels[level];
@@ -69,8 +69,8 @@ namespace unilateral::lcp
             0,
             "block size not in 1..4");
     const Hierarchy::Level &finest = hierarchy.levels.back();
-    require(finest.n_unknowns == problem.size() &&
-              finest.constrained.empty() && finest.prolongation.size() == 0,
+    require(finest.n_unknowns == problem.size() && finest.constrained.empty() &&
+              finest.prolongation.size() == 0,
             n_levels - 1,
             "the finest level is not the problem");
     for (unsigned int level = 0; level < n_levels; ++level)

@@ -10,9 +10,6 @@
 #include <Eigen/SparseCholesky>
 
 #include <vector>
-#include <chrono>
-#include <cstdlib>
-#include <iostream>
 
 namespace unilateral::lcp
 {
@@ -106,14 +103,14 @@ namespace unilateral::lcp
 
     /// Per level: the node layout, the matrix, the transfer to the next
     /// finer level (P and P^T, node blocks; the last: none).
-    std::vector<std::vector<Index>>   nodes;
-    std::vector<BlockMatrix::NodeMap> maps;
-    unsigned int                      block_size;
-    dealii::MGLevelObject<BlockMatrix>         matrices;
-    std::vector<BlockMatrix>                   prolongations, restrictions;
-    dealii::MGLevelObject<DiagonalInverses>    inverses;
-    dealii::MGLevelObject<LevelOperator>       operators;
-    dealii::mg::Matrix<LevelVector>            level_matrices;
+    std::vector<std::vector<Index>>         nodes;
+    std::vector<BlockMatrix::NodeMap>       maps;
+    unsigned int                            block_size;
+    dealii::MGLevelObject<BlockMatrix>      matrices;
+    std::vector<BlockMatrix>                prolongations, restrictions;
+    dealii::MGLevelObject<DiagonalInverses> inverses;
+    dealii::MGLevelObject<LevelOperator>    operators;
+    dealii::mg::Matrix<LevelVector>         level_matrices;
 
     /// The cycle's levels 0..top; the top's mask and truncated transfer.
     unsigned int top = 0;
@@ -126,15 +123,13 @@ namespace unilateral::lcp
     const BlockMatrix &
     prolongation(const unsigned int to_level) const
     {
-      return to_level == top ? top_prolongation :
-                               prolongations[to_level - 1];
+      return to_level == top ? top_prolongation : prolongations[to_level - 1];
     }
 
     const BlockMatrix &
     restriction(const unsigned int from_level) const
     {
-      return from_level == top ? top_restriction :
-                                 restrictions[from_level - 1];
+      return from_level == top ? top_restriction : restrictions[from_level - 1];
     }
 
     /// Whether truncate() ran (the levels below the top are truncated).
@@ -308,8 +303,8 @@ namespace unilateral::lcp
                                     maps[level],
                                     false);
         prolongations[level] = restrictions[level].transpose();
-        matrices[level]      = matrices[level + 1].galerkin(
-          prolongations[level], restrictions[level]);
+        matrices[level] = matrices[level + 1].galerkin(prolongations[level],
+                                                       restrictions[level]);
       }
     for (unsigned int level = 0; level < n_levels; ++level)
       operators[level].matrix = &matrices[level];
@@ -397,7 +392,7 @@ namespace unilateral::lcp
   {
     const std::vector<Index> &nodes = implementation->nodes[level];
     const unsigned int        bs    = implementation->block_size;
-    Vector u(implementation->maps[level].node.size());
+    Vector                    u(implementation->maps[level].node.size());
     for (std::size_t k = 0; k < nodes.size(); ++k)
       if (nodes[k] >= 0)
         u[nodes[k]] = x[B * (k / bs) + k % bs];
@@ -465,8 +460,9 @@ namespace unilateral::lcp
   } // namespace
 
   void
-  TruncatedMultigrid::Implementation::truncate_fully(const unsigned int new_top,
-                                                     const LevelVector &new_mask)
+  TruncatedMultigrid::Implementation::truncate_fully(
+    const unsigned int new_top,
+    const LevelVector &new_mask)
   {
     top  = new_top;
     mask = new_mask;
@@ -494,8 +490,8 @@ namespace unilateral::lcp
   {
     // The top level's nodes whose mask changed: their rows of P~ and
     // columns of P~^T, and their smoothers.
-    const BlockMatrix &P = prolongations.empty() ? matrices[top] :
-                                                   prolongations[top - 1];
+    const BlockMatrix &P =
+      prolongations.empty() ? matrices[top] : prolongations[top - 1];
     std::vector<Index> changed;
     for (Index k = 0; k < matrices[top].n_rows(); ++k)
       {
@@ -540,8 +536,6 @@ namespace unilateral::lcp
   void
   TruncatedMultigrid::truncate(const unsigned int top, const LevelVector &mask)
   {
-    const auto t0 = std::chrono::steady_clock::now();
-    struct Timer { std::chrono::steady_clock::time_point t0; unsigned top; ~Timer(){ if (std::getenv("TNNMG_DEBUG")) std::cerr << "        truncate " << top << " " << std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count() << std::endl;} } timer{t0, top};
     Implementation &mg = *implementation;
     // Within one top level only what changed is rebuilt.
     if (mg.truncated && top == mg.top)
@@ -581,11 +575,9 @@ namespace unilateral::lcp
                             const unsigned int max_cycles)
   {
     Implementation &mg = *implementation;
-    const auto t0 = std::chrono::steady_clock::now();
-    struct Timer { std::chrono::steady_clock::time_point t0; unsigned top; ~Timer(){ if (std::getenv("TNNMG_DEBUG")) std::cerr << "        solve " << top << " " << std::chrono::duration<double>(std::chrono::steady_clock::now()-t0).count() << std::endl;} } timer{t0, mg.top};
-    const Cycle cycle(*mg.multigrid, mg.top);
+    const Cycle     cycle(*mg.multigrid, mg.top);
 
-    dealii::ReductionControl control(max_cycles, 1e-300, reduction);
+    dealii::ReductionControl      control(max_cycles, 1e-300, reduction);
     dealii::SolverCG<LevelVector> cg(control);
     d.reinit(r.size());
     try

@@ -72,9 +72,9 @@ namespace unilateral::lcp
   {
   public:
     static constexpr int size = 4;
-    using Block             = BlockTable::Block;
-    using Id                = BlockTable::Id;
-    using NodeVector        = Eigen::Vector4d;
+    using Block               = BlockTable::Block;
+    using Id                  = BlockTable::Id;
+    using NodeVector          = Eigen::Vector4d;
 
     /// Per unknown of one side: its node and its place in the node.
     struct NodeMap
@@ -170,8 +170,8 @@ namespace unilateral::lcp
       NodeVector   r      = Eigen::Map<const NodeVector>(b + size * i);
       const Block *blocks = table.data();
       for (Index p = row_start[i]; p < row_start[i + 1]; ++p)
-        r.noalias() -= blocks[ids[p]] *
-                       Eigen::Map<const NodeVector>(x + size * column[p]);
+        r.noalias() -=
+          blocks[ids[p]] * Eigen::Map<const NodeVector>(x + size * column[p]);
       return r;
     }
 

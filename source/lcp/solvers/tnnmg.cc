@@ -32,12 +32,9 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <ostream>
-#include <iostream>
-#include <cstdlib>
 
 namespace unilateral::lcp
 {
@@ -52,15 +49,13 @@ namespace unilateral::lcp
     class TnnmgParameters : public MethodParametersBase<TnnmgParameters>
     {
     public:
-      double       tolerance          = 1e-12;
-      double       coarse_tolerance   = 1e-6;
-      double       reduction          = 1e-3;
-      unsigned int cycles             = 20;
-      unsigned int search_cycles      = std::getenv("SC") ? std::atoi(std::getenv("SC")) : 20;
-      double final_reduction = std::getenv("FR") ? std::atof(std::getenv("FR")) : 1e-3;
-      unsigned int expansions         = 5;
-      unsigned int smoothing_steps    = 1;
-      bool         nested_iteration   = true;
+      double       tolerance        = 1e-12;
+      double       coarse_tolerance = 1e-6;
+      double       reduction        = 1e-3;
+      unsigned int cycles           = 20;
+      unsigned int expansions       = 5;
+      unsigned int smoothing_steps  = 1;
+      bool         nested_iteration = true;
 
       void
       add_parameters(dealii::ParameterHandler &prm) override
@@ -132,9 +127,9 @@ namespace unilateral::lcp
     {
       unsigned int iterations = 0, cycles = 0, products = 0;
       /// Projected Newton steps rejected for the line search.
-      unsigned int rejected = 0;
-      Index        held       = 0;
-      bool         converged  = false;
+      unsigned int rejected  = 0;
+      Index        held      = 0;
+      bool         converged = false;
     };
 
     class Tnnmg : public Solver
@@ -200,7 +195,7 @@ namespace unilateral::lcp
         {
           const NodeVector r         = A.row_residual(i, lcp.b.begin(), x);
           const Block     &D_inverse = lcp.inverses[i];
-          NodeVector       y = Eigen::Map<const NodeVector>(x + B * i);
+          NodeVector       y         = Eigen::Map<const NodeVector>(x + B * i);
           y.noalias() += D_inverse * r;
           const int c = lcp.bounded[i];
           if (c >= 0 && y[c] < lcp.lower[B * i + c])
@@ -233,17 +228,16 @@ namespace unilateral::lcp
                          const unsigned int        level,
                          const LevelVector        &b) const
     {
-      const bool finest = level + 1 == mg.n_levels();
-      const Hierarchy::Level   &data = hierarchy.levels[level];
+      const bool                finest = level + 1 == mg.n_levels();
+      const Hierarchy::Level   &data   = hierarchy.levels[level];
       const std::vector<Index> &constrained =
         finest ? problem.constrained : data.constrained;
       const Vector &bounds = finest ? problem.lower_bound : data.lower_bound;
 
       LevelProblem lcp;
-      lcp.b = b;
-      Vector lower =
-        Vector::Constant(data.n_unknowns,
-                         -std::numeric_limits<double>::infinity());
+      lcp.b        = b;
+      Vector lower = Vector::Constant(data.n_unknowns,
+                                      -std::numeric_limits<double>::infinity());
       for (std::size_t k = 0; k < constrained.size(); ++k)
         lower[constrained[k]] = bounds[k];
       Vector marks = Vector::Zero(data.n_unknowns);
@@ -366,12 +360,7 @@ namespace unilateral::lcp
               truncated = mask;
             }
           r.scale(mask);
-          // Loose while the held set moves, tight once it stays.
-          const double reduction =
-            same_set ? options.final_reduction : options.reduction;
-          const unsigned int cycles =
-            same_set ? options.cycles : options.search_cycles;
-          outcome.cycles += mg.solve(d, r, reduction, cycles);
+          outcome.cycles += mg.solve(d, r, options.reduction, options.cycles);
           outcome.products += 2;
 
           // The Newton step; where it crosses bounds, those are held too
@@ -386,7 +375,7 @@ namespace unilateral::lcp
               residual_and_energy(A, lcp, v, rv);
               rv.scale(truncated);
               outcome.cycles +=
-                mg.solve(dv, rv, options.reduction, options.search_cycles);
+                mg.solve(dv, rv, options.reduction, options.cycles);
               v += dv;
               ++outcome.products;
               if (expansions == options.expansions)
@@ -411,12 +400,6 @@ namespace unilateral::lcp
           ++outcome.products;
           const double size     = u.linfty_norm();
           const double relative = step.linfty_norm() / (size > 0 ? size : 1);
-          if (std::getenv("TNNMG_DEBUG"))
-            std::cerr << "      it " << outcome.iterations << " held "
-                      << outcome.held << (same_set ? " same" : " changed")
-                      << " expansions " << expansions << " step " << relative
-                      << " residual " << r.linfty_norm() << " energy "
-                      << energy << " cycles " << outcome.cycles << std::endl;
           // Done when the held set stays, the Newton step crosses no
           // bound, and it is below the tolerance or no longer falls (the
           // rounding floor of A u): that step lowered the energy.
@@ -454,8 +437,6 @@ namespace unilateral::lcp
       const LevelVector coarse_u = u;
       mg.prolongate(level - 1, coarse_u, u);
       const std::vector<char> carried = mg.all_parents(level - 1, held);
-      if (std::getenv("TNNMG_DEBUG"))
-        std::cerr << "      carried " << std::count(carried.begin(), carried.end(), 1) << " of held " << std::count(held.begin(), held.end(), 1) << std::endl;
       for (std::size_t k = 0; k < carried.size(); ++k)
         if (carried[k] && fine.bounded[k] >= 0)
           u[B * k + fine.bounded[k]] = fine.lower[B * k + fine.bounded[k]];
@@ -478,7 +459,7 @@ namespace unilateral::lcp
       for (unsigned int level = finest; level-- > 0;)
         mg.restrict_to(level, b[level + 1], b[level]);
 
-      const bool given = solution.u.size() == problem.size();
+      const bool         given = solution.u.size() == problem.size();
       const unsigned int first =
         given || !options.nested_iteration ? finest : 0;
       LevelVector u;
@@ -497,38 +478,23 @@ namespace unilateral::lcp
             start_from_coarser(mg, level, coarse_lcp, lcp, u);
           for (std::size_t i = 0; i < u.size(); ++i)
             u[i] = std::max(u[i], lcp.lower[i]);
-          LevelVector start_u = u;
-          outcome = iterate(mg,
+          outcome    = iterate(mg,
                             level,
                             lcp,
                             u,
                             level == finest ? options.tolerance :
-                                              options.coarse_tolerance,
+                                                 options.coarse_tolerance,
                             level > first);
-          if (std::getenv("TNNMG_DEBUG"))
-            {
-              unsigned only_start = 0, only_final = 0, both = 0, near = 0;
-              for (std::size_t k = 0; k < lcp.bounded.size(); ++k)
-                {
-                  const int c = lcp.bounded[k];
-                  if (c < 0) continue;
-                  const std::size_t i = B * k + c;
-                  const bool s0 = start_u[i] <= lcp.lower[i], s1 = u[i] <= lcp.lower[i];
-                  only_start += s0 && !s1; only_final += s1 && !s0; both += s0 && s1;
-                  if (s1 && !s0 && start_u[i] - lcp.lower[i] < 1e-4) ++near;
-                }
-              std::cerr << "      start vs final: both " << both << " only start " << only_start << " only final " << only_final << " (of which start gap < 1e-4: " << near << ")" << std::endl;
-            }
           coarse_lcp = std::move(lcp);
           report.counters.cg_iterations += outcome.cycles;
           report.counters.matrix_vector_products += outcome.products;
           if (progress != nullptr)
             *progress << "    tnnmg level " << level << " ("
                       << hierarchy.levels[level].n_unknowns
-                      << " unknowns): " << outcome.iterations
-                      << " iterations, " << outcome.cycles << " V-cycles, "
-                      << outcome.held << " held, " << outcome.rejected
-                      << " line searches" << std::endl;
+                      << " unknowns): " << outcome.iterations << " iterations, "
+                      << outcome.cycles << " V-cycles, " << outcome.held
+                      << " held, " << outcome.rejected << " line searches"
+                      << std::endl;
         }
       solution.u        = mg.from_nodes(finest, u);
       report.iterations = outcome.iterations;

@@ -87,9 +87,10 @@ namespace unilateral::plate
     // Each coarse cell: its element and its free DOFs in BFS order.
     constexpr unsigned int n_local = fe::BognerFoxSchmit::dofs_per_cell;
     std::vector<fe::BognerFoxSchmit> elements(
-      geometry.n_x * geometry.n_y, fe::BognerFoxSchmit(dealii::Point<2>(0, 0), 1, 1));
+      geometry.n_x * geometry.n_y,
+      fe::BognerFoxSchmit(dealii::Point<2>(0, 0), 1, 1));
     std::vector<std::array<lcp::Index, n_local>> cell_dofs(elements.size());
-    const std::vector<unsigned int> bfs_index =
+    const std::vector<unsigned int>              bfs_index =
       fe::bfs_local_indices(dof_handler.get_fe());
     std::vector<dealii::types::global_dof_index> local_dofs(n_local);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -173,12 +174,12 @@ namespace unilateral::plate
     hierarchy->block_size = fe::BognerFoxSchmit::dofs_per_vertex;
     for (std::size_t k = coarse.size(); k-- > 0;)
       {
-        const PlateScene &scene = *coarse[k];
-        const PlateScene &finer = k > 0 ? *coarse[k - 1] : *this;
+        const PlateScene     &scene = *coarse[k];
+        const PlateScene     &finer = k > 0 ? *coarse[k - 1] : *this;
         lcp::Hierarchy::Level level;
-        level.n_unknowns  = scene.free_dofs.size();
-        level.nodes       = node_blocks(
-          free_dofs_by_vertex(scene.dof_handler, scene.free_dofs));
+        level.n_unknowns = scene.free_dofs.size();
+        level.nodes =
+          node_blocks(free_dofs_by_vertex(scene.dof_handler, scene.free_dofs));
         level.constrained  = scene.lcp_problem.constrained;
         level.lower_bound  = scene.lcp_problem.lower_bound;
         level.prolongation = scene.interpolation_to(finer);
