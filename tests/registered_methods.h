@@ -74,16 +74,20 @@ namespace registered_methods
    * Every registered method and variant, on the full LCP (first all of
    * these) and then on the Schur complement. A dense method takes the full
    * LCP only where every unknown is constrained (@p has_unconstrained
-   * false), and then not its Schur complement.
+   * false), and then not its Schur complement. A method on a hierarchy of
+   * meshes takes the full LCP of a problem that has one (@p has_hierarchy:
+   * the plate's), never its Schur complement.
    */
   inline std::vector<MethodRun>
-  all(const bool has_unconstrained)
+  all(const bool has_unconstrained, const bool has_hierarchy = false)
   {
     std::vector<MethodRun> runs;
     for (const bool schur_complement : {false, true})
       for (const SolverInfo &info : SolverRegistry::all())
         {
           if (info.dense && has_unconstrained != schur_complement)
+            continue;
+          if (info.needs_hierarchy && (!has_hierarchy || schur_complement))
             continue;
           runs.push_back({&info, schur_complement});
           for (const Variant &variant : info.variants)

@@ -29,7 +29,7 @@ main()
           reference.report.converged() &&
             reference.results().n_contact == reference.results().n_bounds);
   bool       all     = true;
-  const auto methods = registered_methods::all(true);
+  const auto methods = registered_methods::all(true, true);
   for (std::size_t m = 0; m < methods.size(); ++m)
     {
       const registered_methods::MethodRun &method = methods[m];
