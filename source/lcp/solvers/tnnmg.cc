@@ -32,6 +32,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -495,6 +496,24 @@ namespace unilateral::lcp
                       << outcome.cycles << " V-cycles, " << outcome.held
                       << " held, " << outcome.rejected << " line searches"
                       << std::endl;
+        }
+      if (progress != nullptr)
+        {
+          // The yardstick of the cost: one product with the finest A (the
+          // fastest of five).
+          LevelVector Au(u.size());
+          double      fastest = std::numeric_limits<double>::infinity();
+          for (unsigned int k = 0; k < 5; ++k)
+            {
+              const auto start = std::chrono::steady_clock::now();
+              mg.matrix(finest).vmult(Au.begin(), u.begin());
+              fastest = std::min(fastest,
+                                 std::chrono::duration<double>(
+                                   std::chrono::steady_clock::now() - start)
+                                   .count());
+            }
+          *progress << "    tnnmg: one product with A on the finest level "
+                    << fastest << " s" << std::endl;
         }
       solution.u        = mg.from_nodes(finest, u);
       report.iterations = outcome.iterations;
