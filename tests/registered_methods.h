@@ -70,16 +70,27 @@ namespace registered_methods
     }
   };
 
+  /// What a scene's problem carries beyond A, b and the bounds.
+  struct Carries
+  {
+    bool tearing   = false;
+    bool hierarchy = false;
+  };
+  constexpr Carries a_tearing{true, false};
+  constexpr Carries a_hierarchy{false, true};
+
   /**
    * Every registered method and variant, on the full LCP (first all of
    * these) and then on the Schur complement. A dense method takes the full
    * LCP only where every unknown is constrained (@p has_unconstrained
    * false), and then not its Schur complement. A method that works on the
-   * problem torn into subdomains (needs_tearing) takes only the full LCP of
-   * a scene that tears it (@p torn): the Schur complement has no tearing.
+   * problem torn into subdomains (needs_tearing) or on a hierarchy of meshes
+   * (needs_hierarchy) takes only the full LCP of a scene whose problem
+   * @p carries it (the masonry scene tears, the plate scene has levels):
+   * the Schur complement has neither.
    */
   inline std::vector<MethodRun>
-  all(const bool has_unconstrained, const bool torn = false)
+  all(const bool has_unconstrained, const Carries carries = {})
   {
     std::vector<MethodRun> runs;
     for (const bool schur_complement : {false, true})
@@ -87,7 +98,9 @@ namespace registered_methods
         {
           if (info.dense && has_unconstrained != schur_complement)
             continue;
-          if (info.needs_tearing && (!torn || schur_complement))
+          if (info.needs_tearing && (!carries.tearing || schur_complement))
+            continue;
+          if (info.needs_hierarchy && (!carries.hierarchy || schur_complement))
             continue;
           runs.push_back({&info, schur_complement});
           for (const Variant &variant : info.variants)

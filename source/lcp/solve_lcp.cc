@@ -117,6 +117,12 @@ namespace unilateral::lcp
                          "' works on a problem torn into subdomains, which "
                          "this scene does not build (the masonry scene "
                          "does): choose another method");
+      if (info.needs_hierarchy && problem.hierarchy == nullptr)
+        throw InputError("method '" + info.name +
+                         "' works on a hierarchy of meshes, which this "
+                         "problem does not have (the plate scene builds one; "
+                         "a Schur complement has none): choose another "
+                         "method");
       PhaseTimer timer(report, "solve");
       info.create(attempt.parameters, attempt.parameters.of(info.name))
         ->solve(problem, solution, report, progress);

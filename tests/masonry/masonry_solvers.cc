@@ -40,7 +40,8 @@ namespace
   all_methods()
   {
     std::vector<Method> methods;
-    for (const Method &method : registered_methods::all(true, true))
+    for (const Method &method :
+         registered_methods::all(true, registered_methods::a_tearing))
       if (method.schur_complement || !method.info->is_default)
         methods.push_back(method);
     return methods;

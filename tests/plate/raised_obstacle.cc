@@ -28,8 +28,9 @@ main()
   verdict("the reference lies on the obstacle at every interior node",
           reference.report.converged() &&
             reference.results().n_contact == reference.results().n_bounds);
-  bool       all     = true;
-  const auto methods = registered_methods::all(true);
+  bool       all = true;
+  const auto methods =
+    registered_methods::all(true, registered_methods::a_hierarchy);
   for (std::size_t m = 0; m < methods.size(); ++m)
     {
       const registered_methods::MethodRun &method = methods[m];

@@ -1,6 +1,7 @@
 // Every LCP method on the plate: the paper's interior point and block
-// pivoting, PDAS, PDPC, PSOR, LSSNN, and Graves on the Schur complement (it
-// needs every unknown constrained) must find the same plate as PDAS: nodal
+// pivoting, PDAS, PDPC, PSOR, LSSNN, TNNMG (on the plate's hierarchy of
+// meshes), and Graves on the Schur complement (it needs every unknown
+// constrained) must find the same plate as PDAS: nodal
 // DOFs equal to 1e-8 relative and the same nodes in contact, on four small
 // configurations of the paper's tables. A method that is not registered
 // makes the test fail (SolverRegistry throws), never skip.
@@ -18,13 +19,15 @@ namespace
   using Method = registered_methods::MethodRun;
 
   // Every registered method and variant (a dense one on the Schur
-  // complement only: the plate has unconstrained slopes), but the
+  // complement only: the plate has unconstrained slopes; one on a hierarchy
+  // of meshes on the full LCP only), but the
   // reference: the default method on the full LCP.
   std::vector<Method>
   all_methods()
   {
     std::vector<Method> methods;
-    for (const Method &method : registered_methods::all(true))
+    for (const Method &method :
+         registered_methods::all(true, registered_methods::a_hierarchy))
       if (method.schur_complement || !method.info->is_default)
         methods.push_back(method);
     return methods;

@@ -29,6 +29,7 @@
 namespace unilateral::lcp
 {
   struct Tearing;
+  struct Hierarchy;
 
   using Index        = int;
   using Vector       = Eigen::VectorXd;
@@ -65,6 +66,9 @@ namespace unilateral::lcp
     /// The problem torn into floating subdomains (tearing.h), for the dual
     /// methods; null if the builder made none.
     std::shared_ptr<const Tearing> tearing;
+    /// The problem on a sequence of coarser meshes (hierarchy.h), for the
+    /// multigrid methods; null if the builder made none.
+    std::shared_ptr<const Hierarchy> hierarchy;
     /// @}
 
     Index

@@ -270,6 +270,10 @@ namespace unilateral::lcp
     /// of a test on u: TFETI's multipliers tell which contacts close, where
     /// u's tiny gaps and its A u - b cannot.
     bool gives_active_set = false;
+    /// Works on the problem's hierarchy of meshes (Problem::hierarchy,
+    /// which the scenes that can build one build for such a method);
+    /// refuses a problem without one.
+    bool needs_hierarchy = false;
     /// The method of the projection step: exact, warm-started, it finishes
     /// an approximate or regularised answer on A itself (exactly one method
     /// sets it).

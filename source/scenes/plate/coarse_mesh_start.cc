@@ -30,7 +30,9 @@ namespace unilateral::plate
     return parameters.coarse_mesh_start && obstacle != nullptr &&
            std::min(parameters.geometry.n_x, parameters.geometry.n_y) >=
              2 * coarsest_cells &&
-           lcp::SolverRegistry::get(context.solver.method).warm_start;
+           lcp::SolverRegistry::get(context.solver.method).warm_start &&
+           // A method on the hierarchy of meshes climbs it by itself.
+           !lcp::SolverRegistry::get(context.solver.method).needs_hierarchy;
   }
 
   lcp::Solution

@@ -136,7 +136,7 @@ namespace unilateral::plate
 
   // The clamped DOFs are zero, so F needs no lifting.
   void
-  PlateScene::assemble_system(RunContext &)
+  PlateScene::assemble_system(RunContext &context)
   {
     assemble_plate_system(dof_handler,
                           free_dofs,
@@ -150,6 +150,8 @@ namespace unilateral::plate
                           lcp_problem.b);
     // The bending stiffness with the clamped DOFs eliminated.
     lcp_problem.known_semidefinite = true;
+    if (lcp::SolverRegistry::get(context.solver.method).needs_hierarchy)
+      lcp_problem.hierarchy = make_hierarchy();
   }
 
   void

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <unilateral/lcp/hierarchy.h>
 #include <unilateral/lcp/problem.h>
 #include <unilateral/lcp/report.h>
 #include <unilateral/scenes/plate/assembly.h>
@@ -172,6 +173,18 @@ namespace unilateral::plate
     /// where it touches or dips below the obstacle as active set.
     lcp::Solution
     interpolate_to(const PlateScene &fine) const;
+
+    /// In mesh_hierarchy.cc: this mesh's unknowns carried to the free DOFs
+    /// of @p fine, a finer mesh of the same plate: the bicubic field
+    /// evaluated at its nodes (w, w_x, w_y, w_xy), as a |J_fine| x |J|
+    /// matrix.
+    lcp::SparseMatrix
+    interpolation_to(const PlateScene &fine) const;
+
+    /// In mesh_hierarchy.cc: this plate on coarser meshes, for a method
+    /// that works on a hierarchy of meshes.
+    std::shared_ptr<const lcp::Hierarchy>
+    make_hierarchy() const;
 
     Parameters                                   parameters;
     double                                       rigidity;
