@@ -52,7 +52,7 @@ namespace unilateral::lcp
     public:
       double       tolerance        = 1e-12;
       double       coarse_tolerance = 1e-6;
-      double       reduction        = 1e-3;
+      double       reduction        = 1e-1;
       unsigned int cycles           = 20;
       unsigned int expansions       = 5;
       unsigned int smoothing_steps  = 1;
