@@ -52,11 +52,10 @@ namespace unilateral::lcp
     public:
       double       tolerance        = 1e-12;
       double       coarse_tolerance = 1e-6;
-      double       reduction        = 1e-3;
+      double       reduction        = 1e-1;
       unsigned int cycles           = 20;
       unsigned int expansions       = 5;
       unsigned int smoothing_steps  = 1;
-      bool         nested_iteration = true;
 
       void
       add_parameters(dealii::ParameterHandler &prm) override
@@ -90,12 +89,6 @@ namespace unilateral::lcp
                           "Block Gauss-Seidel sweeps before and after each "
                           "coarse correction of a V-cycle.",
                           Integer(1));
-        prm.add_parameter("Nested iteration",
-                          nested_iteration,
-                          "Start from the coarsest level's solution, level "
-                          "by level (full multigrid); false: from zero (or "
-                          "the given start) on the finest level.",
-                          Bool());
       }
 
       void
@@ -154,7 +147,6 @@ namespace unilateral::lcp
                            "with nested iteration";
         info.subsection  = "TNNMG";
         info.default_iterations = "100 per level";
-        info.warm_start         = true;
         info.needs_hierarchy    = true;
         return info;
       }
@@ -460,14 +452,11 @@ namespace unilateral::lcp
       for (unsigned int level = finest; level-- > 0;)
         mg.restrict_to(level, b[level + 1], b[level]);
 
-      const bool         given = solution.u.size() == problem.size();
-      const unsigned int first =
-        given || !options.nested_iteration ? finest : 0;
-      LevelVector u;
-      if (given)
-        mg.to_nodes(finest, solution.u, u);
-      else
-        u.reinit(mg.size(first));
+      // Always from the coarsest level: started on a fine level far from
+      // the solution (from zero on the plate), the line search creeps
+      // towards the obstacle and the held set stays empty.
+      const unsigned int first = 0;
+      LevelVector        u(mg.size(first));
 
       LevelOutcome outcome;
       LevelProblem coarse_lcp;
