@@ -95,14 +95,18 @@ namespace unilateral::lcp
     Vector
     apply_Q(const Vector &l) const;
 
-    /// ||Q l|| = ((G l)^T (G G^T)^-1 G l)^1/2: ||G l|| in orthonormalised
-    /// rows.
-    double
-    norm_of_Q(const Vector &l) const;
+    /// What a product with P F P + rho Q computes of its input x on the
+    /// way: G x and (G G^T)^-1 G x, so that ||Q x||^2 = (G x)^T c and
+    /// Q x = G^T c.
+    struct CoarseParts
+    {
+      Vector Gx, c;
+    };
 
-    /// (P F P + rho Q) x, with two coarse solves and one product with F.
+    /// (P F P + rho Q) x, with two coarse solves and one product with F;
+    /// the coarse parts of x into @p parts.
     Vector
-    apply_penalised(const Vector &x, double rho) const;
+    apply_penalised(const Vector &x, double rho, CoarseParts &parts) const;
 
     unsigned int
     products_with_F() const
