@@ -8,13 +8,15 @@ CSV and Markdown, and plots products with F and time against m.
   /usr/bin/python3 benchmarks/tfeti/run.py [--m 25,50,100,225]
       [--geometries "stack bond,running bond,laminae"]
       [--methods tfeti,pdas,interior_point_pc] [--timeout 900]
-      [--set "TFETI/Penalty=10" ...] [--name serial] [--ranks 1]
+      [--set "TFETI/Penalty=10" ...] [--name serial] [--ranks 1,2]
 
-Each run: g = H/2, no VTU output, peak memory from /usr/bin/time -v (of
-rank 0 with --ranks > 1), the rest from summary.json (TFETI's figures are
+Each run: g = H/2, no VTU output, peak memory from /usr/bin/time -v (the
+largest rank's under mpirun; each rank's is in summary.json too), the rest
+from summary.json (TFETI's figures are
 its "method" object: outer and inner iterations, products with F, the
 coarse problem's size, factor and time). A run over --timeout seconds is
-stopped and reported as such.
+stopped and reported as such. With --ranks 1,2 TFETI runs on each number
+of ranks in turn (mpirun -np N, also for N = 1), the other methods serially.
 """
 import argparse
 import csv
@@ -55,8 +57,8 @@ def prm_text(geometry, m, method, settings, refinement, directory, name):
     return "\n".join(lines) + "\n"
 
 
-def run(executable, geometry, m, method, arguments, directory):
-    name = f"{geometry.replace(' ', '_')}_{m}_{method}"
+def run(executable, geometry, m, method, ranks, arguments, directory):
+    name = f"{geometry.replace(' ', '_')}_{m}_{method}_{ranks}"
     prm = os.path.join(directory, name + ".prm")
     settings = []
     if method == "tfeti":
@@ -68,12 +70,15 @@ def run(executable, geometry, m, method, arguments, directory):
         f.write(prm_text(geometry, m, method, settings, arguments.refinement,
                          directory, name))
     command = ["/usr/bin/time", "-v", executable, prm]
-    if arguments.ranks > 1:
-        command = ["mpirun", "-np", str(arguments.ranks)] + command
+    environment = dict(os.environ)
+    if ranks > 0:
+        command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
+        environment.update(OMPI_ALLOW_RUN_AS_ROOT="1",
+                           OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     start = time.time()
     try:
         process = subprocess.run(command, capture_output=True, text=True,
-                                 timeout=arguments.timeout)
+                                 timeout=arguments.timeout, env=environment)
     except subprocess.TimeoutExpired:
         return {"status": f"stopped after {arguments.timeout} s",
                 "wall": time.time() - start}
@@ -99,11 +104,10 @@ def run(executable, geometry, m, method, arguments, directory):
                 "coarse_size", "coarse_factor_nonzeros",
                 "coarse_factorisation_seconds", "coarse_solve_seconds",
                 "coarse_solves", "products_with_F_seconds", "subdomains",
-                "multipliers"):
+                "multipliers", "most_subdomains_on_a_rank"):
         if key in figures:
             result[key] = figures[key]
     if "ranks" in summary:
-        result["ranks"] = len(summary["ranks"])
         result["peak_gb_per_rank"] = max(
             r["peak_memory_gb"] for r in summary["ranks"])
     return result
@@ -156,7 +160,9 @@ def write_tables(rows, output, name):
                           f"{r['coarse_factor_nonzeros']:.2e}, "
                           f"{int(r['coarse_solves'])}, "
                           f"{r['coarse_factorisation_seconds'] + r['coarse_solve_seconds']:.1f} s")
-            f.write(f"| {r['geometry']} | {r['m']} | {r['method']} | "
+            method = r["method"] + (f" np {r['mpi_ranks']}"
+                                    if r.get("mpi_ranks") else "")
+            f.write(f"| {r['geometry']} | {r['m']} | {method} | "
                     f"{r['wall']:.1f} | {r['solve']:.1f} | "
                     f"{r['peak_gb']:.2f} | {r['iterations']} + "
                     f"{r['projection_iterations']} | {dual} | {coarse} | "
@@ -207,9 +213,10 @@ def main():
     parser.add_argument("--methods", default="tfeti,pdas,interior_point_pc")
     parser.add_argument("--refinement", type=int, default=0)
     parser.add_argument("--timeout", type=float, default=900)
-    parser.add_argument("--ranks", type=int, default=1,
-                        help="mpirun -np RANKS (TFETI distributes its "
-                             "subdomains over them)")
+    parser.add_argument("--ranks", default="",
+                        help="e.g. 1,2: TFETI under mpirun -np N for each "
+                             "N (it distributes its subdomains over them); "
+                             "empty: serially, without mpirun")
     parser.add_argument("--set", action="append", default=[],
                         help="a TFETI option, 'TFETI/Penalty=10'")
     parser.add_argument("--name", default="serial",
@@ -224,12 +231,18 @@ def main():
         for m in [int(x) for x in arguments.m.split(",")]:
             for geometry in arguments.geometries.split(","):
                 for method in arguments.methods.split(","):
-                    row = run(arguments.executable, geometry, m, method,
-                              arguments, directory)
-                    row.update(geometry=geometry, m=m, method=method)
-                    rows.append(row)
-                    print(f"{geometry:13s} m = {m:4d} {method:18s} "
-                          f"{describe(row)}", flush=True)
+                    counts = [0]
+                    if method == "tfeti" and arguments.ranks:
+                        counts = [int(n) for n in arguments.ranks.split(",")]
+                    for ranks in counts:
+                        row = run(arguments.executable, geometry, m, method,
+                                  ranks, arguments, directory)
+                        row.update(geometry=geometry, m=m, method=method,
+                                   mpi_ranks=ranks)
+                        rows.append(row)
+                        label = method + (f" np {ranks}" if ranks else "")
+                        print(f"{geometry:13s} m = {m:4d} {label:18s} "
+                              f"{describe(row)}", flush=True)
                     write_tables(rows, arguments.output, arguments.name)
     with open("/proc/loadavg") as f:
         print("load average at the end:", f.read().split()[:3])
