@@ -7,7 +7,7 @@
 set -e
 
 packages="cmake g++ make libdeal.ii-dev libeigen3-dev libsuitesparse-dev \
-numdiff libopenblas0-pthread python3-vtk9 python3-numpy $*"
+numdiff libopenblas0-pthread openmpi-bin python3-vtk9 python3-numpy $*"
 
 missing=""
 for package in $packages; do

@@ -1,10 +1,13 @@
 // The unilateral executable: everything lives in the core library.
 #include <unilateral/application.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <unistd.h>
 
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -37,13 +40,41 @@ namespace
     if (setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0)
       execv("/proc/self/exe", argv);
   }
+
+  /// Started by an MPI launcher (mpirun, mpiexec, srun): Open MPI, MPICH's
+  /// Hydra and PMIx say so in the environment.
+  bool
+  launched_by_mpi()
+  {
+    for (const char *name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+      if (std::getenv(name) != nullptr)
+        return true;
+    return false;
+  }
 } // namespace
 
+/**
+ * MPI is started only under a launcher, so that a serial run needs no
+ * mpirun and may still restart itself with huge pages: an execv after
+ * MPI_Init would start MPI twice in one process. Under a launcher there is
+ * no restart (`mpirun -x GLIBC_TUNABLES=glibc.malloc.hugetlb=1` gives every
+ * rank huge pages). Every rank reads the same file and fails alike on bad
+ * input; rank 0 alone prints and writes.
+ */
 int
 main(int argc, char **argv)
 {
-  return unilateral::run_application(
-    argc, argv, std::cout, std::cerr, [argv]() {
-      restart_with_huge_pages(argv);
-    });
+  if (!launched_by_mpi())
+    return unilateral::run_application(
+      argc, argv, std::cout, std::cerr, [argv]() {
+        restart_with_huge_pages(argv);
+      });
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool                               speaks =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::ofstream nowhere; // never opened: what is written to it is dropped
+  return unilateral::run_application(argc,
+                                     argv,
+                                     speaks ? std::cout : nowhere,
+                                     speaks ? std::cerr : nowhere);
 }

@@ -1,6 +1,7 @@
 #include <unilateral/application.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
+#include <unilateral/base/ranks.h>
 #include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/scene.h>
 
@@ -239,6 +240,31 @@ namespace unilateral
         }
     }
 
+    /// The run's folder created, earlier outputs removed, the parameter
+    /// file copied in.
+    void
+    prepare_output_directory(const std::filesystem::path &directory,
+                             const std::string           &setting,
+                             const std::string           &parameter_file)
+    {
+      std::error_code error;
+      std::filesystem::create_directories(directory, error);
+      if (error)
+        throw InputError("parameter 'Output/Directory' = " + setting +
+                         ": cannot create '" + directory.string() +
+                         "': " + error.message());
+      remove_earlier_outputs(directory, parameter_file);
+      // A parameters.prm left now is the file being read (a rerun from the
+      // copy), which is not copied onto itself.
+      if (!std::filesystem::exists(directory / "parameters.prm"))
+        std::filesystem::copy_file(parameter_file,
+                                   directory / "parameters.prm",
+                                   error);
+      if (error)
+        throw InputError("cannot copy the parameter file into '" +
+                         directory.string() + "': " + error.message());
+    }
+
     int
     run(const std::string           &parameter_file,
         std::ostream                &out,
@@ -297,23 +323,14 @@ namespace unilateral
           directory.empty() ? "output" :
                               resolve_relative_to(parameter_file, directory)) /
         context.run_name;
-      std::error_code error;
-      std::filesystem::create_directories(context.output_directory, error);
-      if (error)
-        throw InputError(
-          "parameter 'Output/Directory' = " + directory + ": cannot create '" +
-          context.output_directory.string() + "': " + error.message());
-      remove_earlier_outputs(context.output_directory, parameter_file);
-      // A parameters.prm left now is the file being read (a rerun from the
-      // copy), which is not copied onto itself.
-      if (!std::filesystem::exists(context.output_directory / "parameters.prm"))
-        std::filesystem::copy_file(parameter_file,
-                                   context.output_directory / "parameters.prm",
-                                   error);
-      if (error)
-        throw InputError("cannot copy the parameter file into '" +
-                         context.output_directory.string() +
-                         "': " + error.message());
+      // Rank 0 writes for all ranks, which compute the same answer.
+      context.writes_files = ranks::this_rank() == 0;
+      if (context.writes_files)
+        prepare_output_directory(context.output_directory,
+                                 directory,
+                                 parameter_file);
+      else
+        context.write_vtu = context.export_lcp = context.write_solution = false;
 
       dealii::TimerOutput timer(out,
                                 dealii::TimerOutput::never,
@@ -352,7 +369,8 @@ namespace unilateral
         }
       if (!failure.empty())
         {
-          write_error_summary(context, scene_info.name, failure);
+          if (context.writes_files)
+            write_error_summary(context, scene_info.name, failure);
           throw InputError(failure);
         }
       out << "  results in " << shown(context.output_directory) << "/"

@@ -42,6 +42,21 @@ namespace unilateral::memory
     }
   } // namespace
 
+  double
+  peak_resident()
+  {
+    std::ifstream status("/proc/self/status");
+    std::string   key, unit;
+    double        kilobytes = 0;
+    while (status >> key)
+      {
+        if (key == "VmHWM:" && status >> kilobytes)
+          return 1024 * kilobytes;
+        std::getline(status, unit);
+      }
+    return 0;
+  }
+
   void
   set_limit(const double bytes)
   {

@@ -84,9 +84,17 @@ namespace unilateral::lcp
   }
 
   void
+  Mprgp::moved(const double alpha) const
+  {
+    if (observer)
+      observer(alpha);
+  }
+
+  void
   Mprgp::restart(const Vector &x)
   {
     g = product(x) - r;
+    moved(std::numeric_limits<double>::quiet_NaN());
     p = free_gradient(x);
   }
 
@@ -106,6 +114,7 @@ namespace unilateral::lcp
     if (alpha_cg <= alpha_f)
       {
         x -= alpha_cg * p;
+        moved(alpha_cg);
         g -= alpha_cg * Hp;
         const Vector phi = free_gradient(x);
         p                = phi - (phi.dot(Hp) / pHp) * p;
@@ -113,6 +122,7 @@ namespace unilateral::lcp
       }
     x -= alpha_f * p;
     g -= alpha_f * Hp;
+    moved(alpha_f);
     x -= alpha_bar * free_gradient(x);
     project(x);
     restart(x);
@@ -130,6 +140,7 @@ namespace unilateral::lcp
       return false;
     const double alpha = g.dot(beta) / dHd;
     x -= alpha * beta;
+    moved(alpha);
     g -= alpha * Hd;
     p = free_gradient(x);
     return true;

@@ -206,7 +206,7 @@ namespace unilateral::lcp
             const std::vector<Index> &ordering,
             std::uint64_t             hash,
             bool                      relaxed_supernodes,
-            bool                      try_nested_dissection,
+            double                    nested_dissection_fronts,
             Counters                 &counters);
 
     bool
@@ -248,9 +248,9 @@ namespace unilateral::lcp
   SparseCholesky::Implementation::analyse(const SparseMatrix       &A,
                                           const std::vector<Index> &ordering,
                                           const std::uint64_t       hash,
-                                          const bool relaxed_supernodes,
-                                          const bool try_nested_dissection,
-                                          Counters  &counters)
+                                          const bool   relaxed_supernodes,
+                                          const double nested_dissection_fronts,
+                                          Counters    &counters)
   {
     cholmod_sparse matrix = view(A);
     if (factor != nullptr)
@@ -264,8 +264,8 @@ namespace unilateral::lcp
         factor                    = cholmod_analyze(&matrix, &common);
         const double amd_flops    = common.fl;
         const double amd_lnz      = common.lnz;
-        if (try_nested_dissection && factor != nullptr &&
-            amd_flops >= 500 * amd_lnz)
+        if (nested_dissection_fronts >= 0 && factor != nullptr &&
+            amd_flops >= nested_dissection_fronts * amd_lnz)
           {
             common.method[0].ordering = CHOLMOD_METIS;
             cholmod_factor *nested    = cholmod_analyze(&matrix, &common);
@@ -346,8 +346,12 @@ namespace unilateral::lcp
     if (impl.factor == nullptr || impl.pattern_size != A.rows() ||
         impl.pattern_nonzeros != A.nonZeros() || impl.pattern_hash != hash ||
         impl.pattern_relaxed != relaxed_supernodes)
-      impl.analyse(
-        A, ordering, hash, relaxed_supernodes, try_nested_dissection, counters);
+      impl.analyse(A,
+                   ordering,
+                   hash,
+                   relaxed_supernodes,
+                   try_nested_dissection ? nested_dissection_fronts : -1.0,
+                   counters);
 
     if (impl.modified != nullptr)
       cholmod_free_factor(&impl.modified, &impl.common);

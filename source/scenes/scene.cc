@@ -1,8 +1,11 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/memory.h>
 #include <unilateral/base/text.h>
 #include <unilateral/lcp/io.h>
 #include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/scenes/scene.h>
+
+#include <deal.II/base/mpi.h>
 
 #include <cmath>
 #include <iomanip>
@@ -102,6 +105,20 @@ namespace unilateral
         .set("partial_forward_solves", work.partial_forward_solves)
         .set("centrality_correctors", work.centrality_correctors)
         .set("matrix_vector_products", work.matrix_vector_products);
+      // Every rank's peak memory (a collective call: every rank is here).
+      const std::vector<double> peaks =
+        dealii::Utilities::MPI::all_gather(MPI_COMM_WORLD,
+                                           memory::peak_resident());
+      std::vector<JsonObject> ranks(peaks.size());
+      for (std::size_t r = 0; r < peaks.size(); ++r)
+        ranks[r]
+          .set("rank", static_cast<unsigned int>(r))
+          .set("peak_memory_gb", peaks[r] / 1e9);
+      summary.set("ranks", ranks);
+      if (context.progress != nullptr && peaks.size() > 1)
+        for (std::size_t r = 0; r < peaks.size(); ++r)
+          *context.progress << "  rank " << r << ": peak memory "
+                            << memory::format(peaks[r]) << std::endl;
       if (!report.figures.empty())
         {
           JsonObject &method = summary.object("method");
@@ -198,7 +215,8 @@ namespace unilateral
       print_summary(*context.out, report);
     JsonObject summary = summary_base(context, name(), lcp_problem, report);
     add_summary(summary);
-    summary.write_file((context.output_directory / "summary.json").string());
+    if (context.writes_files)
+      summary.write_file((context.output_directory / "summary.json").string());
     return report;
   }
 

@@ -12,102 +12,9 @@
 // contacts whose multipliers are positive) makes it exact: in one or two
 // iterations where TFETI's active set is right, so that is checked too (a
 // wrong dual still ends exact, after many more).
-#include "masonry_test_tools.h"
+#include "tfeti_test_tools.h"
 
-#include <algorithm>
-#include <cmath>
-#include <string>
-
-using namespace masonry_test;
-
-namespace
-{
-  std::string
-  prm_text(const std::string &geometry,
-           const unsigned int m,
-           const std::string &method,
-           const std::string &boundary = "")
-  {
-    return "subsection Masonry\n  set Geometry = " + geometry +
-           "\n  set Blocks per side = " + std::to_string(m) +
-           "\n  subsection Boundary conditions\n" + boundary +
-           "  end\nend\nsubsection Solver\n  set Method = " + method +
-           "\nend\n";
-  }
-
-  template <int dim>
-  double
-  largest_displacement(const MasonryScene<dim> &scene)
-  {
-    double largest = 0;
-    for (const auto &node : scene.nodal_displacements())
-      for (unsigned int d = 0; d < dim; ++d)
-        largest = std::max(largest, std::abs(node.displacement[d]));
-    return largest;
-  }
-
-  // The verdicts of TFETI's run against PDAS's.
-  template <int dim>
-  void
-  compare(const std::string &what,
-          const RunOf<dim>  &reference,
-          const RunOf<dim>  &result)
-  {
-    const auto  &ref_contacts = reference.scene->constraint_results();
-    const auto  &contacts     = result.scene->constraint_results();
-    const double gap_scale =
-      std::max(largest_displacement(*reference.scene), 1e-300);
-    double force_scale = 0;
-    for (const auto &c : ref_contacts)
-      force_scale = std::max(force_scale, std::abs(c.contact_force));
-    unsigned int n_degenerate = 0, n_closed = 0, different_closed = 0;
-    double       force_difference = 0;
-    for (std::size_t k = 0; k < contacts.size(); ++k)
-      {
-        const bool closed_ref = ref_contacts[k].normal_gap <= 1e-10 * gap_scale;
-        const bool closed     = contacts[k].normal_gap <= 1e-10 * gap_scale;
-        n_closed += closed_ref;
-        different_closed += closed != closed_ref;
-        n_degenerate += closed_ref && std::abs(ref_contacts[k].contact_force) <=
-                                        1e-10 * force_scale;
-        force_difference = std::max(force_difference,
-                                    std::abs(contacts[k].contact_force -
-                                             ref_contacts[k].contact_force));
-      }
-    const double energy_difference =
-      std::abs(result.report.energy - reference.report.energy);
-    std::cout
-      << what << " (" << n_closed << " of " << contacts.size()
-      << " contacts closed, " << n_degenerate << " degenerate): converged: "
-      << yes_no(result.report.converged() && reference.report.converged())
-      << ", KKT <= 1e-10: " << yes_no(result.report.kkt.max() <= 1e-10)
-      << ", energy: "
-      << yes_no(energy_difference <= 1e-10 * std::abs(reference.report.energy))
-      << ", closed contacts: " << yes_no(different_closed == 0)
-      << ", forces: " << yes_no(force_difference <= 1e-8 * force_scale)
-      << ", projection in 1 or 2 iterations: "
-      << yes_no(result.report.projection_iterations >= 1 &&
-                result.report.projection_iterations <= 2)
-      << "\n";
-  }
-
-  template <int dim = 2>
-  void
-  against_pdas(const std::string &what,
-               const std::string &geometry,
-               const unsigned int m,
-               const std::string &boundary = "",
-               const std::string &masonry  = "")
-  {
-    const RunOf<dim> reference =
-      run<dim>(parse(masonry + prm_text(geometry, m, "pdas", boundary)),
-               "tfeti");
-    const RunOf<dim> result =
-      run<dim>(parse(masonry + prm_text(geometry, m, "tfeti", boundary)),
-               "tfeti");
-    compare(what, reference, result);
-  }
-} // namespace
+using namespace tfeti_test;
 
 int
 main()
@@ -124,6 +31,7 @@ main()
                     5,
                     "    set Normal displacement zero = left, right, front, "
                     "base where x > s\n",
+                    "tfeti",
                     "subsection Masonry\n  set Dimension = 3\n"
                     "  set Blocks through the thickness = 2\n"
                     "  set Thickness = 2\nend\n");

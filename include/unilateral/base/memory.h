@@ -48,6 +48,11 @@ namespace unilateral
     void
     require(double bytes, const std::string &what);
 
+    /// The process's peak resident memory so far (VmHWM), in bytes; 0 if
+    /// the kernel does not say.
+    double
+    peak_resident();
+
     /// "1.2 GB", "350 MB", "12 kB".
     std::string
     format(double bytes);

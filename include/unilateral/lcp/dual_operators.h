@@ -23,6 +23,17 @@ namespace unilateral::lcp
    * rigid motions are held by no multiplier (no support, no neighbour):
    * coarse_factorised() is then false and coarse_failure() says which.
    *
+   * The subdomains are distributed over the ranks of the tearing's
+   * communicator, each rank its own contiguous run of them (balanced by
+   * the work of their local solves): a product with F sums the ranks'
+   * parts, the one communication of an iteration. Everything else, the
+   * coarse problem included, is replicated: every rank computes the same
+   * multipliers.
+   *
+   * While it lives, OpenBLAS runs on one thread: a coarse solve is a
+   * sequence of small triangular BLAS calls per supernode, which threads
+   * slow down many times over (benchmarks/tfeti/README.md).
+   *
    * Every product with F and every coarse solve is counted and timed
    * (add_work), for the report: products with F are TFETI's measure of
    * work, the coarse problem its one global coupling.
@@ -31,6 +42,13 @@ namespace unilateral::lcp
   {
   public:
     explicit DualOperators(const Tearing &tearing);
+
+    /// Gives OpenBLAS its threads back.
+    ~DualOperators();
+
+    DualOperators(const DualOperators &) = delete;
+    DualOperators &
+    operator=(const DualOperators &) = delete;
 
     const Tearing &
     tearing() const
@@ -79,7 +97,7 @@ namespace unilateral::lcp
     Vector
     apply_rigid_motions_transposed(const Vector &x) const;
 
-    /// F l = B K^+ B^T l (counted).
+    /// F l = B K^+ B^T l (counted; the sum over the ranks' subdomains).
     Vector
     apply_F(const Vector &l) const;
 
@@ -95,14 +113,18 @@ namespace unilateral::lcp
     Vector
     apply_Q(const Vector &l) const;
 
-    /// ||Q l|| = ((G l)^T (G G^T)^-1 G l)^1/2: ||G l|| in orthonormalised
-    /// rows.
-    double
-    norm_of_Q(const Vector &l) const;
+    /// What a product with P F P + rho Q computes of its input x on the
+    /// way: G x and (G G^T)^-1 G x, so that ||Q x||^2 = (G x)^T c and
+    /// Q x = G^T c.
+    struct CoarseParts
+    {
+      Vector Gx, c;
+    };
 
-    /// (P F P + rho Q) x, with two coarse solves and one product with F.
+    /// (P F P + rho Q) x, with two coarse solves and one product with F;
+    /// the coarse parts of x into @p parts.
     Vector
-    apply_penalised(const Vector &x, double rho) const;
+    apply_penalised(const Vector &x, double rho, CoarseParts &parts) const;
 
     unsigned int
     products_with_F() const
@@ -126,15 +148,24 @@ namespace unilateral::lcp
     void
     coarse_space();
 
+    void
+    own_subdomains();
+
     const Tearing           &torn;
     std::vector<DenseMatrix> pseudo_inverse, rigid;
-    SparseMatrix             coarse_matrix;
-    Index                    coarse_size = 0;
-    SparseCholesky           coarse;
-    bool                     factorised = false;
-    Counters                 setup_counters;
-    double                   setup_seconds = 0, factorisation_seconds = 0;
-    mutable unsigned int     n_products = 0, n_coarse_solves = 0;
-    mutable double           product_seconds = 0, coarse_seconds = 0;
+    /// This rank's subdomains, as runs of one shape.
+    std::vector<Tearing::Group> own;
+    Index                       n_own   = 0;
+    unsigned int                n_ranks = 1;
+    SparseMatrix                coarse_matrix;
+    Index                       coarse_size = 0;
+    SparseCholesky              coarse;
+    bool                        factorised = false;
+    Counters                    setup_counters;
+    /// OpenBLAS's threads before (0: not OpenBLAS).
+    int                  blas_threads  = 0;
+    double               setup_seconds = 0, factorisation_seconds = 0;
+    mutable unsigned int n_products = 0, n_coarse_solves = 0;
+    mutable double       product_seconds = 0, coarse_seconds = 0;
   };
 } // namespace unilateral::lcp

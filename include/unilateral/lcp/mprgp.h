@@ -49,7 +49,22 @@ namespace unilateral::lcp
       diverged         ///< a non-finite iterate
     };
 
+    /**
+     * Told of every move of the iterate, so that a caller can keep a
+     * linear function of it up to date from what its products compute
+     * anyway (TFETI: G x and the coarse solve of ||Q x||): x -= alpha d, d
+     * the input of the last product; or, with alpha NaN, x is now the
+     * input of the last product itself.
+     */
+    using Observer = std::function<void(double alpha)>;
+
     Mprgp(Operator H, Vector r, Vector lower, double alpha_bar, double gamma);
+
+    void
+    observe(Observer observer)
+    {
+      this->observer = std::move(observer);
+    }
 
     /**
      * From @p x (projected onto the feasible set first) until @p stop holds
@@ -110,7 +125,12 @@ namespace unilateral::lcp
     bool
     proportioning(Vector &x, const Vector &beta);
 
+    /// x -= alpha d for the last product's input d (moved), or x = d.
+    void
+    moved(double alpha) const;
+
     Operator     H;
+    Observer     observer;
     Vector       r, lower;
     double       alpha_bar, gamma;
     Vector       g, p;

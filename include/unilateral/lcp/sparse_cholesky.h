@@ -178,6 +178,11 @@ namespace unilateral::lcp
      */
     bool try_nested_dissection = false;
 
+    /// The flops per entry of L from which try_nested_dissection tries
+    /// METIS. 0: always, for a factor solved with many times, whose
+    /// entries set the cost of a solve (TFETI's coarse matrix).
+    double nested_dissection_fronts = 500;
+
     /// A factor with a smaller estimate counts as singular (0: never).
     /// Active-set systems set it: their A_FF must hold every body. The
     /// interior-point systems do not: A + diag(lambda / s) is badly scaled

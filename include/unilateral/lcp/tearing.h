@@ -2,6 +2,8 @@
 
 #include <unilateral/lcp/problem.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -73,6 +75,10 @@ namespace unilateral::lcp
     /// messages ("block 7 with lower left corner (0.1, 0.2)"); unset:
     /// "subdomain k".
     std::function<std::string(Index)> describe_subdomain;
+
+    /// The ranks that share the subdomains, each its own contiguous run of
+    /// them (MPI_COMM_WORLD; with MPI not started, the one process).
+    MPI_Comm communicator = MPI_COMM_WORLD;
 
     std::string
     describe(Index subdomain) const;

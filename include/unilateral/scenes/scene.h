@@ -35,6 +35,7 @@ namespace unilateral
     bool                  export_lcp     = false;
     bool                  write_solution = false;
     bool                  print_timings  = true;
+    bool                  writes_files   = true; ///< false on ranks > 0
     lcp::SolverParameters solver;
     std::ostream         *out      = nullptr; ///< the screen, or null
     std::ostream         *progress = nullptr; ///< iteration lines, or null

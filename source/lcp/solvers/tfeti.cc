@@ -249,21 +249,35 @@ namespace unilateral::lcp
       const unsigned int first_product = dual.products_with_F();
       double previous_lagrangian = -std::numeric_limits<double>::infinity();
       double previous_violation  = std::numeric_limits<double>::infinity();
+      // The coarse parts of the last product's input and of m.
+      DualOperators::CoarseParts last, current;
       for (outer = 0; outer < options.max_outer; ++outer)
         {
           const Vector r = problem.b - q;
-          Mprgp        mprgp([&](const Vector &x,
-                          Vector &y) { y = dual.apply_penalised(x, rho); },
-                      r,
-                      problem.lower,
-                      options.step_length / std::max(norm_pfp, rho),
-                      1.0);
+          Mprgp        mprgp(
+            [&](const Vector &x, Vector &y) {
+              y = dual.apply_penalised(x, rho, last);
+            },
+            r,
+            problem.lower,
+            options.step_length / std::max(norm_pfp, rho),
+            1.0);
+          // G m and (G G^T)^-1 G m follow m from the products' own.
+          mprgp.observe([&](const double alpha) {
+            if (std::isnan(alpha))
+              current = last;
+            else
+              {
+                current.Gx -= alpha * last.Gx;
+                current.c -= alpha * last.c;
+              }
+          });
           // The inner precision, against the current violation ||Q m|| (m
           // is MPRGP's iterate); the whole problem converged stops too.
           bool       by_precision = false;
           double     violation    = 0;
           const auto stop         = [&](const double projected_gradient) {
-            violation = dual.norm_of_Q(m);
+            violation = std::sqrt(std::max(0.0, current.Gx.dot(current.c)));
             if (converged(projected_gradient, violation))
               return true;
             by_precision = projected_gradient <=
@@ -303,7 +317,7 @@ namespace unilateral::lcp
                                              0.5 * rho * violation * violation)
             M /= options.precision_update;
           previous_lagrangian = lagrangian;
-          q += rho * dual.apply_Q(m);
+          q += rho * (dual.G().transpose() * current.c);
           if (violation > 0.5 * previous_violation)
             rho *= options.penalty_growth;
           previous_violation = violation;

@@ -1,0 +1,38 @@
+// TFETI with its subdomains distributed over the ranks (run with 1 and with
+// 2 ranks, .mpirun=1. and .mpirun=2.): on every wall the same answer as
+// serial PDAS, which every rank computes alone (energy to 1e-10, the same
+// closed contacts, KKT <= 1e-10; the verdicts of tfeti_test_tools.h), so
+// that the answers on 1 and 2 ranks are the same. The number of ranks that
+// shared the subdomains is printed: the two outputs differ only there.
+// Rank 0 prints; every rank writes its runs into its own folder.
+#include "tfeti_test_tools.h"
+
+#include <deal.II/base/mpi.h>
+
+using namespace tfeti_test;
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int                       rank =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  if (rank != 0)
+    std::cout.setstate(std::ios::failbit);
+  const std::string name = "tfeti_rank_" + std::to_string(rank);
+
+  for (const std::string geometry : {"stack bond", "running bond", "laminae"})
+    for (const unsigned int m : {5u, 10u})
+      {
+        const Run tfeti = against_pdas(
+          geometry + ", m = " + std::to_string(m), geometry, m, "", name);
+        for (const auto &[figure, value] : tfeti.report.figures)
+          if (figure == "ranks")
+            std::cout << "  subdomains shared by " << value << " ranks\n";
+      }
+  against_pdas("stack bond, m = 10, g = 0",
+               "stack bond",
+               10,
+               "    set Relative gap = 0\n",
+               name);
+}
