@@ -180,7 +180,7 @@ def plot(rows, output, name):
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.5))
     for geometry in sorted({r["geometry"] for r in rows}):
         tfeti = [r for r in rows if r["geometry"] == geometry
-                 and r["method"] == "tfeti" and "products_with_F" in r]
+                 and r["method"] == "tfeti" and r.get("products_with_F")]
         if tfeti:
             left.loglog([r["m"] for r in tfeti],
                         [r["products_with_F"] for r in tfeti], "o-",
@@ -188,7 +188,7 @@ def plot(rows, output, name):
         for method, style in (("tfeti", "o-"), ("pdas", "s--"),
                               ("interior_point_pc", "^:")):
             done = [r for r in rows if r["geometry"] == geometry
-                    and r["method"] == method and "energy" in r]
+                    and r["method"] == method and r.get("energy")]
             if done:
                 right.loglog([r["m"] for r in done],
                              [r["wall"] for r in done], style,
@@ -223,7 +223,17 @@ def main():
                         help="the base name of the CSV, Markdown and plot")
     parser.add_argument("--output", default=os.path.join(
         ROOT, "benchmarks", "results", "tfeti"))
+    parser.add_argument("--replot", action="store_true",
+                        help="only the plot again, from NAME.csv")
     arguments = parser.parse_args()
+    if arguments.replot:
+        with open(os.path.join(arguments.output,
+                               arguments.name + ".csv")) as f:
+            rows = [{k: (float(v) if k not in ("geometry", "method",
+                                                "status") and v else v)
+                     for k, v in row.items()} for row in csv.DictReader(f)]
+        plot(rows, arguments.output, arguments.name)
+        return
     with open("/proc/loadavg") as f:
         print("load average at the start:", f.read().split()[:3])
     rows = []
