@@ -162,7 +162,10 @@ namespace unilateral::lcp
     own->fixed_diagonal = fixed_diagonal;
     inherited.reset(); // our own factor is closer from now on
 
-    if (n_fixed <= reduced_threshold * n)
+    // A distributed factorisation always takes the full pattern: its
+    // symbolic analysis (a parallel ordering over all ranks) is then run
+    // once for every active set.
+    if (n_fixed <= reduced_threshold * n || own->cholesky.distributed())
       {
         // The full pattern: zero the coupling of fixed indices, keep a
         // scaled identity on their diagonal (the conditioning of A).
@@ -257,7 +260,8 @@ namespace unilateral::lcp
   bool
   ActiveSetSystem::modify_factor(const std::vector<char> &fixed)
   {
-    if (!own_valid || !own->reduced_index.empty() || !room_for_modified_copy())
+    if (!own_valid || !own->reduced_index.empty() ||
+        own->cholesky.distributed() || !room_for_modified_copy())
       return false;
     std::vector<Index> newly_fixed, newly_free;
     for (std::size_t i = 0; i < fixed.size(); ++i)

@@ -1,6 +1,8 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/ranks.h>
 #include <unilateral/base/text.h>
 #include <unilateral/lcp/answer_checks.h>
+#include <unilateral/lcp/distributed_cholesky.h>
 #include <unilateral/lcp/projection.h>
 #include <unilateral/lcp/schur_complement.h>
 #include <unilateral/lcp/solve_lcp.h>
@@ -124,6 +126,18 @@ namespace unilateral::lcp
                          "a Schur complement has none): choose another "
                          "method");
       PhaseTimer timer(report, "solve");
+      // Every sparse factorisation the method makes, however deep, runs
+      // over the ranks while this scope is open.
+      std::optional<DistributedFactorisations> over_ranks;
+      if (attempt.parameters.factorises_over_ranks(info))
+        {
+          over_ranks.emplace(MPI_COMM_WORLD);
+          const unsigned int n_ranks = ranks::n_ranks();
+          report.set_figure("factorisation_ranks", n_ranks);
+          if (progress != nullptr)
+            *progress << "  factorisations over " << n_ranks
+                      << (n_ranks == 1 ? " rank" : " ranks") << " (MUMPS)\n";
+        }
       info.create(attempt.parameters, attempt.parameters.of(info.name))
         ->solve(problem, solution, report, progress);
     }

@@ -1,4 +1,6 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/ranks.h>
+#include <unilateral/lcp/distributed_cholesky.h>
 #include <unilateral/lcp/solver.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -118,6 +120,7 @@ namespace unilateral::lcp
     max_iterations   = other.max_iterations;
     max_dense_size   = other.max_dense_size;
     kkt_tolerance    = other.kkt_tolerance;
+    factorisation    = other.factorisation;
     methods.clear();
     for (const auto &[name, options] : other.methods)
       methods[name] = options->clone();
@@ -125,6 +128,14 @@ namespace unilateral::lcp
   }
 
   SolverParameters::~SolverParameters() = default;
+
+  bool
+  SolverParameters::factorises_over_ranks(const SolverInfo &method) const
+  {
+    if (method.needs_tearing || factorisation == "cholmod")
+      return false;
+    return factorisation == "mumps" || ranks::n_ranks() > 1;
+  }
 
   const MethodParameters &
   SolverParameters::of(const std::string &name) const
@@ -235,6 +246,21 @@ namespace unilateral::lcp
       "A method that reports convergence while the relative KKT residuals "
       "of its answer exceed this gets status 'inaccurate': no wrong answer "
       "is printed as converged.");
+    prm.declare_entry(
+      "Factorisation",
+      "auto",
+      Selection("auto|cholmod|mumps"),
+      "Where the sparse factorisations of the direct methods run. cholmod: "
+      "on each rank alone (SuiteSparse CHOLMOD, with row updates of a factor "
+      "between active sets). mumps: spread over the ranks of the MPI run "
+      "(MUMPS through PETSc; needs mpirun, also for one rank), every rank "
+      "holding a share of each factor and of its work, the same answer. "
+      "auto: mumps when the run has more than one rank, cholmod otherwise. "
+      "Methods that tear the problem into subdomains (" +
+        methods_where(
+          [](const SolverInfo &info) { return info.needs_tearing; }) +
+        ") share their subdomains among the ranks themselves and always "
+        "factorise with cholmod.");
     for (const SolverInfo &info : SolverRegistry::all())
       if (!info.subsection.empty())
         {
@@ -281,6 +307,9 @@ namespace unilateral::lcp
     max_iterations = prm.get_integer("Maximum iterations");
     max_dense_size = prm.get_integer("Maximum dense size");
     kkt_tolerance  = prm.get_double("KKT tolerance");
+    factorisation  = prm.get("Factorisation");
+    if (factorisation == "mumps")
+      DistributedCholesky::require_available();
     check_parameter(kkt_tolerance > 0,
                     "Solver",
                     "KKT tolerance",

@@ -1,4 +1,5 @@
 #include <unilateral/base/memory.h>
+#include <unilateral/lcp/distributed_cholesky.h>
 #include <unilateral/lcp/sparse_cholesky.h>
 
 #include <cholmod.h>
@@ -6,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace unilateral::lcp
@@ -30,6 +32,9 @@ namespace unilateral::lcp
     cholmod_common  common;
     cholmod_factor *factor       = nullptr;
     bool            factor_valid = false;
+    // The factorisation over the ranks that replaces CHOLMOD's when this
+    // object was made inside a DistributedFactorisations scope.
+    std::unique_ptr<DistributedCholesky> distributed;
     // The simplicial LDL' copy of factor that row modifications work on,
     // null until the first one after a factorisation.
     cholmod_factor *modified = nullptr;
@@ -233,7 +238,17 @@ namespace unilateral::lcp
 
   SparseCholesky::SparseCholesky()
     : implementation(std::make_unique<Implementation>())
-  {}
+  {
+    if (const MPI_Comm *communicator = DistributedFactorisations::current())
+      implementation->distributed =
+        std::make_unique<DistributedCholesky>(*communicator);
+  }
+
+  bool
+  SparseCholesky::distributed() const
+  {
+    return implementation->distributed != nullptr;
+  }
 
   SparseCholesky::~SparseCholesky() = default;
 
@@ -335,6 +350,9 @@ namespace unilateral::lcp
     if (!A.isCompressed())
       throw std::logic_error("SparseCholesky needs a compressed matrix");
     auto &impl = *implementation;
+    if (impl.distributed) // MUMPS orders the matrix itself
+      return impl.factor_valid =
+               impl.distributed->factorise(A, minimum_rcond, counters);
     if (A.rows() == 0) // nothing to factorise (CHOLMOD rejects 0 x 0)
       {
         impl.factor_valid = true;
@@ -405,7 +423,7 @@ namespace unilateral::lcp
   SparseCholesky::prepare_modification()
   {
     auto &impl = *implementation;
-    if (!impl.factor_valid || impl.factor == nullptr)
+    if (!impl.factor_valid || impl.factor == nullptr || impl.distributed)
       return false;
     if (impl.modified == nullptr)
       {
@@ -480,6 +498,8 @@ namespace unilateral::lcp
     const std::vector<Index> &indices) const
   {
     auto &impl = *implementation;
+    if (impl.distributed) // not modified row by row
+      return std::numeric_limits<double>::infinity();
     if (impl.factor == nullptr)
       return 0;
     if (impl.path_entries.empty())
@@ -668,6 +688,8 @@ namespace unilateral::lcp
   double
   SparseCholesky::factorisation_flops() const
   {
+    if (implementation->distributed)
+      return implementation->distributed->factorisation_flops();
     return implementation->analysis_flops;
   }
 
@@ -681,6 +703,10 @@ namespace unilateral::lcp
   SparseCholesky::reciprocal_condition() const
   {
     auto &impl = *implementation;
+    if (impl.distributed)
+      throw std::logic_error("SparseCholesky::reciprocal_condition of a "
+                             "distributed factor (MUMPS tests null pivots "
+                             "while it factorises instead)");
     if (!impl.factor_valid || impl.current() == nullptr)
       return 0;
     return cholmod_rcond(impl.current(), &impl.common);
@@ -720,7 +746,9 @@ namespace unilateral::lcp
   double
   SparseCholesky::factor_nonzeros() const
   {
-    const auto           &impl   = *implementation;
+    const auto &impl = *implementation;
+    if (impl.distributed)
+      return impl.distributed->factor_nonzeros();
     const cholmod_factor *factor = impl.current();
     if (factor == nullptr)
       return 0;
@@ -916,7 +944,8 @@ namespace unilateral::lcp
                                const double        max_entries) const
   {
     auto &impl = *implementation;
-    if (!impl.factor_valid)
+    // A distributed factor is not walked along its tree: full solves.
+    if (!impl.factor_valid || impl.distributed)
       return false;
     const Index k = static_cast<Index>(B.cols());
     if (B.rows() == 0) // the empty factor of an empty matrix
@@ -1014,6 +1043,11 @@ namespace unilateral::lcp
     auto &impl = *implementation;
     if (!impl.factor_valid)
       throw std::logic_error("SparseCholesky::solve without a valid factor");
+    if (impl.distributed)
+      {
+        impl.distributed->solve(B, X);
+        return;
+      }
     if (B.rows() == 0)
       {
         X.resize(0, B.cols());

@@ -82,6 +82,8 @@ namespace unilateral::lcp
    * and each registered method's own (its subsection inside "Solver"), all
    * at their defaults until parsed or set.
    */
+  struct SolverInfo;
+
   class SolverParameters
   {
   public:
@@ -109,6 +111,14 @@ namespace unilateral::lcp
     unsigned int max_dense_size = 6000;
     /// Final check: relative KKT residuals above this make a run "inaccurate".
     double kkt_tolerance = 1e-8;
+    /// Where sparse factorisations run: "auto", "cholmod" (each rank
+    /// alone) or "mumps" (over the ranks of the run).
+    std::string factorisation = "auto";
+
+    /// Whether @p method's factorisations run over the ranks of the run
+    /// (a DistributedFactorisations scope around its solve).
+    bool
+    factorises_over_ranks(const SolverInfo &method) const;
 
     /// The options of the registered method @p name.
     const MethodParameters &

@@ -25,6 +25,13 @@ namespace unilateral::lcp
    * factorisations of one pattern, row deletions and additions of an
    * existing factor (rowdel/rowadd), and partial forward solves along the
    * elimination tree (inverse_gram); the wrappers factorise from scratch.
+   *
+   * Made inside a DistributedFactorisations scope (an MPI run with 'Solver/
+   * Factorisation' = mumps, or auto on several ranks), the object factorises
+   * and solves through a DistributedCholesky over the scope's ranks instead:
+   * the same answers, without what only CHOLMOD offers (row modifications
+   * report an infinite cost and fail, inverse_gram declines, a given
+   * ordering is ignored), which every caller already falls back from.
    */
   class SparseCholesky
   {
@@ -72,6 +79,10 @@ namespace unilateral::lcp
 
     bool
     has_factor() const;
+
+    /// Whether this factorisation runs over several ranks (MUMPS).
+    bool
+    distributed() const;
 
     /**
      * G = B' A^-1 B for sparse columns B (n x k, in the indices of A): with
