@@ -471,6 +471,17 @@ namespace unilateral::lcp
         info.exact              = false;
         info.variants           = {{"predictor-corrector",
                                     {{"Interior point/Variant", "predictor-corrector"}}}};
+        // Near the end the Newton matrix spans many orders of magnitude
+        // (lambda / s on the closed contacts); a factorisation may then meet
+        // a pivot that rounding made zero or negative (MUMPS's pivoting LDL'
+        // does on a 3D wall where CHOLMOD's LL' passes). That says nothing
+        // about the LCP, so "singular" is checked by PDAS, an exact method,
+        // rather than reported as a wall without equilibrium.
+        FollowUp check;
+        check.kind   = FollowUp::Kind::verification;
+        check.when   = Status::singular;
+        check.method = "pdas";
+        info.follow_ups.push_back(check);
         return info;
       }
 
