@@ -265,6 +265,40 @@ namespace unilateral
                          directory.string() + "': " + error.message());
     }
 
+    /**
+     * prepare_output_directory() by rank 0 alone, the other ranks waiting
+     * for it (they may write into the folder): if it fails, rank 0 throws
+     * its error and the others throw one that points to it, rather than
+     * wait for a rank that has stopped.
+     */
+    void
+    prepare_output_directory_on_rank_0(const std::filesystem::path &directory,
+                                       const std::string           &setting,
+                                       const std::string &parameter_file)
+    {
+      if (ranks::n_ranks() == 1)
+        {
+          prepare_output_directory(directory, setting, parameter_file);
+          return;
+        }
+      int prepared = 1;
+      try
+        {
+          if (ranks::this_rank() == 0)
+            prepare_output_directory(directory, setting, parameter_file);
+        }
+      catch (...)
+        {
+          prepared = 0;
+          MPI_Bcast(&prepared, 1, MPI_INT, 0, MPI_COMM_WORLD);
+          throw;
+        }
+      MPI_Bcast(&prepared, 1, MPI_INT, 0, MPI_COMM_WORLD);
+      if (!prepared)
+        throw InputError("rank 0 could not prepare the output folder '" +
+                         directory.string() + "' (its message says why)");
+    }
+
     int
     run(const std::string           &parameter_file,
         std::ostream                &out,
@@ -323,14 +357,18 @@ namespace unilateral
           directory.empty() ? "output" :
                               resolve_relative_to(parameter_file, directory)) /
         context.run_name;
-      // Rank 0 writes for all ranks, which compute the same answer.
+      // Rank 0 writes for all ranks, which compute the same answer; a scene
+      // that writes its VTU in pieces has every rank write its own.
       context.writes_files = ranks::this_rank() == 0;
-      if (context.writes_files)
-        prepare_output_directory(context.output_directory,
-                                 directory,
-                                 parameter_file);
-      else
-        context.write_vtu = context.export_lcp = context.write_solution = false;
+      prepare_output_directory_on_rank_0(context.output_directory,
+                                         directory,
+                                         parameter_file);
+      if (!context.writes_files)
+        {
+          context.export_lcp = context.write_solution = false;
+          context.write_vtu =
+            context.write_vtu && scene->writes_output_in_parallel();
+        }
 
       dealii::TimerOutput timer(out,
                                 dealii::TimerOutput::never,

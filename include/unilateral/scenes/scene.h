@@ -114,6 +114,17 @@ namespace unilateral
     virtual std::string
     failure_description(const lcp::Report &report) const;
 
+    /**
+     * Whether every rank of an MPI run writes its own piece of the VTU
+     * output (and rank 0 the PVTU record that joins them); false: rank 0
+     * writes the whole output alone (every rank holds the whole answer).
+     */
+    virtual bool
+    writes_output_in_parallel() const
+    {
+      return false;
+    }
+
     /// The registered name ("masonry").
     const std::string &
     name() const

@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/ranks.h>
 
 #include "scene_state.h"
 
@@ -212,6 +213,36 @@ namespace unilateral::masonry
                              "contact_pressure");
     data_out.add_data_vector(node_handler, normal_gap, "normal_gap");
     data_out.add_data_vector(node_handler, active_set, "active_set");
+    // On several ranks each writes the blocks of its own contiguous run of
+    // block ids (its piece of the output), rank 0 the record that joins them.
+    const unsigned int rank        = ranks::this_rank();
+    const unsigned int n_ranks     = ranks::n_ranks();
+    const std::size_t  n_blocks    = state->class_of_block.size();
+    const std::size_t  first_block = n_blocks * rank / n_ranks;
+    const std::size_t  end_block   = n_blocks * (rank + 1) / n_ranks;
+    using CellIterator = typename dealii::Triangulation<dim>::cell_iterator;
+    using ActiveIterator =
+      typename dealii::Triangulation<dim>::active_cell_iterator;
+    const auto in_piece = [first_block, end_block](const CellIterator &cell) {
+      return cell->material_id() >= first_block &&
+             cell->material_id() < end_block;
+    };
+    // The first selected active cell from @p cell on.
+    const auto from = [in_piece](ActiveIterator                    cell,
+                                 const dealii::Triangulation<dim> &mesh) {
+      while (cell != mesh.end() && !in_piece(cell))
+        ++cell;
+      return CellIterator(cell);
+    };
+    if (n_ranks > 1)
+      data_out.set_cell_selection(
+        [from](const dealii::Triangulation<dim> &mesh) {
+          return from(mesh.begin_active(), mesh);
+        },
+        [from](const dealii::Triangulation<dim> &mesh,
+               const CellIterator               &cell) {
+          return from(std::next(ActiveIterator(cell)), mesh);
+        });
     // Two subdivisions per cell: the patch points are the quadratic nodes,
     // so ParaView shows the nodal values exactly.
     data_out.build_patches(*discretisation.mapping, 2);
@@ -236,15 +267,16 @@ namespace unilateral::masonry
                   << "\" format=\"ascii\">\n";
         for (const auto &cell :
              discretisation.triangulation.active_cell_iterators())
-          {
-            const unsigned int value =
-              name == std::string("block_id") ?
-                cell->material_id() :
-                state->class_of_block[cell->material_id()];
-            for (unsigned int k = 0; k < vtk_cells_per_cell; ++k)
-              cell_data << value << ' ';
-            cell_data << '\n';
-          }
+          if (n_ranks == 1 || in_piece(cell))
+            {
+              const unsigned int value =
+                name == std::string("block_id") ?
+                  cell->material_id() :
+                  state->class_of_block[cell->material_id()];
+              for (unsigned int k = 0; k < vtk_cells_per_cell; ++k)
+                cell_data << value << ' ';
+              cell_data << '\n';
+            }
         cell_data << "    </DataArray>\n";
       }
     cell_data << "    </CellData>\n";
@@ -254,17 +286,45 @@ namespace unilateral::masonry
                 dealii::ExcMessage("unexpected VTU layout from DataOut"));
     text.insert(end_of_piece, cell_data.str());
 
-    const std::string vtu_name  = "solution_000.vtu";
-    const auto        directory = context.output_directory;
-    {
-      std::ofstream vtu(directory / vtu_name);
-      vtu << text;
-      if (!vtu)
-        throw InputError("cannot write '" + (directory / vtu_name).string() +
-                         "'");
-    }
+    const auto directory = context.output_directory;
+    const auto write     = [&directory](const std::string &name,
+                                    const std::string &content) {
+      std::ofstream file(directory / name);
+      file << content;
+      if (!file)
+        throw InputError("cannot write '" + (directory / name).string() + "'");
+    };
+    if (n_ranks == 1)
+      {
+        write("solution_000.vtu", text);
+        std::ofstream pvd(directory / "solution.pvd");
+        dealii::DataOutBase::write_pvd_record(pvd, {{0.0, "solution_000.vtu"}});
+        return;
+      }
+    const auto piece = [](const unsigned int r) {
+      return "solution_000." + std::to_string(r) + ".vtu";
+    };
+    write(piece(rank), text);
+    if (rank != 0)
+      return;
+    std::vector<std::string> pieces;
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      pieces.push_back(piece(r));
+    std::ostringstream record;
+    data_out.write_pvtu_record(record, pieces);
+    // The record declares the point data only; the cell data above too.
+    std::string       pvtu      = record.str();
+    const std::size_t points_at = pvtu.find("<PPoints>");
+    AssertThrow(points_at != std::string::npos,
+                dealii::ExcMessage("unexpected PVTU layout from DataOut"));
+    pvtu.insert(points_at,
+                "<PCellData Scalars=\"block_id\">\n"
+                "      <PDataArray type=\"Int32\" Name=\"block_id\"/>\n"
+                "      <PDataArray type=\"Int32\" Name=\"material\"/>\n"
+                "    </PCellData>\n    ");
+    write("solution_000.pvtu", pvtu);
     std::ofstream pvd(directory / "solution.pvd");
-    dealii::DataOutBase::write_pvd_record(pvd, {{0.0, vtu_name}});
+    dealii::DataOutBase::write_pvd_record(pvd, {{0.0, "solution_000.pvtu"}});
   }
 
   template void

@@ -121,6 +121,13 @@ namespace unilateral::masonry
     std::string
     failure_description(const lcp::Report &report) const override;
 
+    /// Each rank writes the blocks of its own contiguous run of block ids.
+    bool
+    writes_output_in_parallel() const override
+    {
+      return true;
+    }
+
     /// m 2^r >= 100, or a mesh file of 20 MB: smaller problems gain less
     /// from huge pages than the restart costs (measured: README.md, "How
     /// the solve works").
