@@ -15,8 +15,13 @@ largest rank's under mpirun; each rank's is in summary.json too), the rest
 from summary.json (TFETI's figures are
 its "method" object: outer and inner iterations, products with F, the
 coarse problem's size, factor and time). A run over --timeout seconds is
-stopped and reported as such. With --ranks 1,2 TFETI runs on each number
-of ranks in turn (mpirun -np N, also for N = 1), the other methods serially.
+stopped and reported as such. With --ranks 1,2 the methods that work over
+the ranks run on each number of ranks in turn (mpirun -np N, also for
+N = 1): TFETI (route 2: its subdomains shared among the ranks) and the
+*_mumps methods (route 1: PDAS or the interior point with 'Factorisation =
+mumps', every factorisation spread over the ranks); the other methods run
+serially. Under mpirun every rank runs BLAS on --threads-per-rank threads
+(default 1: the ranks already fill the cores).
 """
 import argparse
 import csv
@@ -35,7 +40,17 @@ METHODS = {
     "interior_point_pc": ("interior_point",
                           [("Interior point", "Variant",
                             "predictor-corrector")]),
+    "pdas_mumps": ("pdas", [("", "Factorisation", "mumps")]),
+    "interior_point_pc_mumps": ("interior_point",
+                                [("Interior point", "Variant",
+                                  "predictor-corrector"),
+                                 ("", "Factorisation", "mumps")]),
 }
+
+
+def over_ranks(method):
+    """Whether the method works over the ranks of an MPI run."""
+    return method == "tfeti" or method.endswith("_mumps")
 
 
 def prm_text(geometry, m, method, settings, refinement, directory, name):
@@ -72,7 +87,10 @@ def run(executable, geometry, m, method, ranks, arguments, directory):
     command = ["/usr/bin/time", "-v", executable, prm]
     environment = dict(os.environ)
     if ranks > 0:
-        command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
+        threads = str(arguments.threads_per_rank)
+        command = ["mpirun", "--oversubscribe", "-np", str(ranks),
+                   "-x", f"OMP_NUM_THREADS={threads}",
+                   "-x", f"OPENBLAS_NUM_THREADS={threads}"] + command
         environment.update(OMPI_ALLOW_RUN_AS_ROOT="1",
                            OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     start = time.time()
@@ -104,7 +122,8 @@ def run(executable, geometry, m, method, ranks, arguments, directory):
                 "coarse_size", "coarse_factor_nonzeros",
                 "coarse_factorisation_seconds", "coarse_solve_seconds",
                 "coarse_solves", "products_with_F_seconds", "subdomains",
-                "multipliers", "most_subdomains_on_a_rank"):
+                "multipliers", "most_subdomains_on_a_rank",
+                "factorisation_ranks"):
         if key in figures:
             result[key] = figures[key]
     if "ranks" in summary:
@@ -185,14 +204,21 @@ def plot(rows, output, name):
             left.loglog([r["m"] for r in tfeti],
                         [r["products_with_F"] for r in tfeti], "o-",
                         label=geometry)
-        for method, style in (("tfeti", "o-"), ("pdas", "s--"),
-                              ("interior_point_pc", "^:")):
+        styles = {"tfeti": "o-", "pdas": "s--", "interior_point_pc": "^:",
+                  "pdas_mumps": "D-.", "interior_point_pc_mumps": "v-."}
+        runs = sorted({(r["method"], int(r.get("mpi_ranks") or 0))
+                       for r in rows})
+        for method, ranks in runs:
             done = [r for r in rows if r["geometry"] == geometry
-                    and r["method"] == method and r.get("energy")]
+                    and r["method"] == method
+                    and int(r.get("mpi_ranks") or 0) == ranks
+                    and r.get("energy")]
             if done:
+                label = f"{geometry}, {method}" + (f" np {ranks}"
+                                                   if ranks else "")
                 right.loglog([r["m"] for r in done],
-                             [r["wall"] for r in done], style,
-                             label=f"{geometry}, {method}")
+                             [r["wall"] for r in done],
+                             styles.get(method, "x-"), label=label)
     left.set_xlabel("m (blocks per side)")
     left.set_ylabel("products with F")
     left.legend()
@@ -214,9 +240,11 @@ def main():
     parser.add_argument("--refinement", type=int, default=0)
     parser.add_argument("--timeout", type=float, default=900)
     parser.add_argument("--ranks", default="",
-                        help="e.g. 1,2: TFETI under mpirun -np N for each "
-                             "N (it distributes its subdomains over them); "
-                             "empty: serially, without mpirun")
+                        help="e.g. 1,2: TFETI and the *_mumps methods under "
+                             "mpirun -np N for each N; empty: serially, "
+                             "without mpirun (the *_mumps methods need it)")
+    parser.add_argument("--threads-per-rank", type=int, default=1,
+                        help="BLAS threads of each rank under mpirun")
     parser.add_argument("--set", action="append", default=[],
                         help="a TFETI option, 'TFETI/Penalty=10'")
     parser.add_argument("--name", default="serial",
@@ -242,7 +270,7 @@ def main():
             for geometry in arguments.geometries.split(","):
                 for method in arguments.methods.split(","):
                     counts = [0]
-                    if method == "tfeti" and arguments.ranks:
+                    if over_ranks(method) and arguments.ranks:
                         counts = [int(n) for n in arguments.ranks.split(",")]
                     for ranks in counts:
                         row = run(arguments.executable, geometry, m, method,
