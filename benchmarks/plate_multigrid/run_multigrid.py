@@ -3,7 +3,7 @@
 n x n meshes, solved by TNNMG (the plate's hierarchy of BFS meshes) and by
 PDAS (today's default: sparse Cholesky with the coarse-mesh start), side by
 side in one run: end-to-end wall time, solve time, peak memory
-(/usr/bin/time -v), V-cycles per level, the ratio of the solve time to the
+(/usr/bin/time -v), multigrid cycles per level, the ratio of the solve time to the
 time of one product with the finest A, and whether both found the same
 plate (cn, smallest and centre deflection).
 
@@ -72,7 +72,7 @@ def run(executable, n, method, directory):
     rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)",
                     process.stderr)
     levels = re.findall(r"tnnmg level (\d+) \((\d+) unknowns\): (\d+) "
-                        r"iterations, (\d+) V-cycles", process.stdout)
+                        r"iterations, (\d+) [VW]-cycles", process.stdout)
     product = re.search(r"one product with A on the finest level (\S+) s",
                         process.stdout)
     return {"n": n, "method": method, "unknowns": summary["n_unknowns"],
@@ -134,7 +134,7 @@ def main():
 def table_and_plot(rows):
     print("\n|   n | unknowns | TNNMG wall | TNNMG solve | TNNMG peak |"
           " PDAS wall | PDAS solve | PDAS peak | cn TNNMG / PDAS | deflection"
-          " difference | KKT TNNMG / PDAS | V-cycles per level (coarsest"
+          " difference | KKT TNNMG / PDAS | cycles per level (coarsest"
           " first) | solve / product |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:

@@ -99,7 +99,8 @@ namespace unilateral::lcp
   public:
     Implementation(const Hierarchy    &hierarchy,
                    const SparseMatrix &A,
-                   unsigned int        smoothing_steps);
+                   unsigned int        smoothing_steps,
+                   Cycle               cycle);
 
     /// Per level: the node layout, the matrix, the transfer to the next
     /// finer level (P and P^T, node blocks; the last: none).
@@ -119,6 +120,12 @@ namespace unilateral::lcp
 
     Eigen::SimplicialLDLT<SparseMatrix> coarse_factor;
     unsigned int                        smoothing_steps;
+    Cycle                               cycle;
+
+    /// The W-cycle's vectors per level: the defect it is given, the
+    /// solution it returns (from zero), a scratch vector and the first
+    /// coarse correction kept while the second is computed.
+    std::vector<LevelVector> defect, solution, scratch, first_correction;
 
     const BlockMatrix &
     prolongation(const unsigned int to_level) const
@@ -144,6 +151,21 @@ namespace unilateral::lcp
 
     void
     factorise_coarsest();
+
+    void
+    smooth(const unsigned int level,
+           LevelVector       &x,
+           const LevelVector &rhs,
+           const bool         forward) const
+    {
+      for (unsigned int k = 0; k < smoothing_steps; ++k)
+        block_gauss_seidel(
+          matrices[level], inverses[level], x.begin(), rhs.begin(), forward);
+    }
+
+    /// solution[level] = W-cycle applied to defect[level], from zero.
+    void
+    w_cycle(unsigned int level);
 
     /// The truncated levels built anew for @p top and @p mask.
     void
@@ -175,12 +197,7 @@ namespace unilateral::lcp
              LevelVector       &u,
              const LevelVector &rhs) const override
       {
-        for (unsigned int k = 0; k < mg.smoothing_steps; ++k)
-          block_gauss_seidel(mg.matrices[level],
-                             mg.inverses[level],
-                             u.begin(),
-                             rhs.begin(),
-                             forward);
+        mg.smooth(level, u, rhs, forward);
       }
 
     private:
@@ -243,41 +260,52 @@ namespace unilateral::lcp
       const Implementation &mg;
     };
 
-    /// The preconditioner: one V-cycle on levels 0..top for the top's
-    /// defect.
-    class Cycle
+    /// The preconditioner: one cycle on levels 0..top for the top's
+    /// defect (deal.II's V-cycle, or our W-cycle).
+    class Preconditioner
     {
     public:
-      Cycle(dealii::Multigrid<LevelVector> &multigrid, const unsigned int top)
-        : multigrid(multigrid)
-        , top(top)
+      explicit Preconditioner(Implementation &mg)
+        : mg(mg)
       {}
 
       void
       vmult(LevelVector &dst, const LevelVector &src) const
       {
-        for (unsigned int level = 0; level < top; ++level)
-          multigrid.defect[level] = 0;
-        multigrid.defect[top] = src;
-        multigrid.cycle();
-        dst = multigrid.solution[top];
+        const unsigned int top = mg.top;
+        if (mg.cycle == TruncatedMultigrid::Cycle::w)
+          {
+            mg.defect[top] = src;
+            mg.w_cycle(top);
+            dst = mg.solution[top];
+          }
+        else
+          {
+            dealii::Multigrid<LevelVector> &multigrid = *mg.multigrid;
+            for (unsigned int level = 0; level < top; ++level)
+              multigrid.defect[level] = 0;
+            multigrid.defect[top] = src;
+            multigrid.cycle();
+            dst = multigrid.solution[top];
+          }
         ++cycles;
       }
 
       mutable unsigned int cycles = 0;
 
     private:
-      dealii::Multigrid<LevelVector> &multigrid;
-      const unsigned int              top;
+      Implementation &mg;
     };
   } // namespace
 
   TruncatedMultigrid::Implementation::Implementation(
     const Hierarchy    &hierarchy,
     const SparseMatrix &A,
-    const unsigned int  smoothing_steps)
+    const unsigned int  smoothing_steps,
+    const Cycle         cycle)
     : block_size(hierarchy.block_size)
     , smoothing_steps(smoothing_steps)
+    , cycle(cycle)
   {
     const auto n_levels = static_cast<unsigned int>(hierarchy.levels.size());
     for (const Hierarchy::Level &level : hierarchy.levels)
@@ -346,11 +374,44 @@ namespace unilateral::lcp
     // The held entries' right-hand sides are 0, so are their solutions.
   }
 
+  void
+  TruncatedMultigrid::Implementation::w_cycle(const unsigned int level)
+  {
+    LevelVector &x = solution[level];
+    if (level == 0)
+      {
+        Eigen::Map<Vector>(x.begin(), x.size()) = coarse_factor.solve(
+          Eigen::Map<const Vector>(defect[0].begin(), defect[0].size()));
+        return;
+      }
+    x = 0;
+    smooth(level, x, defect[level], true);
+    operators[level].vmult(scratch[level], x);
+    scratch[level].sadd(-1.0, 1.0, defect[level]);
+    restriction(level).vmult(defect[level - 1].begin(), scratch[level].begin());
+    w_cycle(level - 1);
+    // The second coarse correction, on the defect the first left (the
+    // coarsest level's solve is exact: once is enough there).
+    if (level - 1 > 0)
+      {
+        first_correction[level - 1] = solution[level - 1];
+        operators[level - 1].vmult(scratch[level - 1], solution[level - 1]);
+        defect[level - 1] -= scratch[level - 1];
+        w_cycle(level - 1);
+        solution[level - 1] += first_correction[level - 1];
+      }
+    prolongation(level).vmult(scratch[level].begin(),
+                              solution[level - 1].begin());
+    x += scratch[level];
+    smooth(level, x, defect[level], false);
+  }
+
   TruncatedMultigrid::TruncatedMultigrid(const Hierarchy    &hierarchy,
                                          const SparseMatrix &A,
-                                         const unsigned int  smoothing_steps)
+                                         const unsigned int  smoothing_steps,
+                                         const Cycle         cycle)
     : implementation(
-        std::make_unique<Implementation>(hierarchy, A, smoothing_steps))
+        std::make_unique<Implementation>(hierarchy, A, smoothing_steps, cycle))
   {}
 
   TruncatedMultigrid::~TruncatedMultigrid() = default;
@@ -558,6 +619,13 @@ namespace unilateral::lcp
                                                            top);
         for (unsigned int level = 0; level <= top; ++level)
           mg.multigrid->defect[level].reinit(size(level));
+        for (auto *vectors :
+             {&mg.defect, &mg.solution, &mg.scratch, &mg.first_correction})
+          {
+            vectors->resize(top + 1);
+            for (unsigned int level = 0; level <= top; ++level)
+              (*vectors)[level].reinit(size(level));
+          }
       }
     mg.truncated = true;
   }
@@ -574,8 +642,8 @@ namespace unilateral::lcp
                             const double       reduction,
                             const unsigned int max_cycles)
   {
-    Implementation &mg = *implementation;
-    const Cycle     cycle(*mg.multigrid, mg.top);
+    Implementation      &mg = *implementation;
+    const Preconditioner cycle(mg);
 
     dealii::ReductionControl      control(max_cycles, 1e-300, reduction);
     dealii::SolverCG<LevelVector> cg(control);

@@ -24,11 +24,18 @@ namespace unilateral::lcp
    * the truncated top matrix, M A M, through P~. Levels above the top keep
    * their own matrices (the nested iteration climbs through them).
    *
-   * The cycle is deal.II's Multigrid (V-cycle), with mg::Matrix over the
-   * levels' operators, a symmetric block Gauss-Seidel smoother (forward
-   * before the coarse correction, backward after: a symmetric
-   * preconditioner) on the nodes' 4 x 4 blocks, and a sparse LDL^T of the
-   * coarsest level; solve() accelerates it with deal.II's SolverCG.
+   * The V-cycle is deal.II's Multigrid, with mg::Matrix over the levels'
+   * operators, a symmetric block Gauss-Seidel smoother (forward before the
+   * coarse correction, backward after: a symmetric preconditioner) on the
+   * nodes' 4 x 4 blocks, and a sparse LDL^T of the coarsest level; solve()
+   * accelerates it with deal.II's SolverCG. The W-cycle (two coarse
+   * corrections per level, the second on the defect the first leaves) is
+   * our own recursion over the same levels, smoothers and coarse solve:
+   * deal.II 9.4's Multigrid::level_step starts the second visit of a
+   * coarser level from zero on the same defect (the smoother's apply()
+   * zeroes the solution) and so discards the first, which makes its
+   * W-cycle a V-cycle at twice the coarse cost (corrected in deal.II after
+   * 9.4, pull request 19710).
    * deal.II's transfer classes and PreconditionMG need a DoFHandler with
    * level DOFs of a refined Triangulation and an element deal.II can
    * prolongate: the hierarchy here comes as matrices from any builder (the
@@ -41,12 +48,20 @@ namespace unilateral::lcp
   public:
     using LevelVector = dealii::Vector<double>;
 
+    /// One coarse correction per level (V) or two (W).
+    enum class Cycle
+    {
+      v,
+      w
+    };
+
     /// The levels of @p hierarchy with @p A on the finest (A_l for the
     /// coarse ones by Galerkin products); @p smoothing_steps Gauss-Seidel
     /// sweeps before and after each coarse correction.
     TruncatedMultigrid(const Hierarchy    &hierarchy,
                        const SparseMatrix &A,
-                       unsigned int        smoothing_steps);
+                       unsigned int        smoothing_steps,
+                       Cycle               cycle = Cycle::v);
 
     ~TruncatedMultigrid();
 
@@ -100,7 +115,7 @@ namespace unilateral::lcp
 
     /**
      * d with M A_top M d = M r approximately (d = 0 where held): conjugate
-     * gradients preconditioned with one V-cycle each, from d = 0, until the
+     * gradients preconditioned with one cycle each, from d = 0, until the
      * residual has fallen by @p reduction or after @p max_cycles cycles.
      * Returns the number of cycles.
      */

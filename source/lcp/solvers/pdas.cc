@@ -124,7 +124,9 @@ namespace unilateral::lcp
      * u_i - l_i - tau lambda_i is beyond +-tolerance_i, the rounding error
      * of lambda_i (and of the slack, lambda_i / A_ii) at the size of its
      * terms. A closed contact carrying exactly zero force otherwise flips
-     * sides on round-off, and PDAS never stops.
+     * sides on round-off, and PDAS never stops. A free index below its bound
+     * by more than the slack's own rounding error becomes active: the
+     * tolerance of the multiplier's term must not let an infeasible u pass.
      */
     class RoundingTest
     {
@@ -153,15 +155,22 @@ namespace unilateral::lcp
                 if (entry.row() == i)
                   diagonal = entry.value();
               }
+            const double slack_rounding =
+              round_off * magnitude * (diagonal > 0 ? 1.0 / diagonal : 0.0);
             const double tolerance =
-              round_off * magnitude *
-              ((diagonal > 0 ? 1.0 / diagonal : 0.0) + tau);
-            const double test =
-              (u[i] - problem.lower_bound[k]) - tau * lambda[i];
+              slack_rounding + round_off * magnitude * tau;
+            const double slack = u[i] - problem.lower_bound[k];
+            const double test  = slack - tau * lambda[i];
             // An exact tie stays on its side (resolve_subset sends ties to
-            // the active side; flipping them back would undo it).
+            // the active side; flipping them back would undo it). A free
+            // index whose value alone lies below its bound beyond rounding
+            // joins the active set whatever its multiplier: tau lambda's
+            // share of the tolerance can exceed the slack's own where A_ii
+            // tau >> 1 (the fine plate), and the test would then accept an
+            // infeasible u.
             const bool now_active =
-              active[i] ? test <= tolerance : test < -tolerance;
+              active[i] ? test <= tolerance :
+                          test < -tolerance || slack < -slack_rounding;
             if (now_active != static_cast<bool>(active[i]))
               result.push_back(i);
           }
