@@ -1,13 +1,15 @@
 // The plate's hierarchy of Bogner-Fox-Schmit meshes and the multigrid
 // method that works on it (issue 22), against independent truth:
-//  - the transfer: where a mesh halves another's and the plate is fully
-//    clamped (nested spaces), the Hermite interpolation P reproduces the
-//    coarse bicubic fields exactly, so the Galerkin product P^T A_fine P is
-//    the coarse mesh's own assembled stiffness and P^T b_fine its own load,
-//    to round-off. (The paper's clamping leaves w_xy free on the boundary:
-//    a coarse field's normal slope is then nonzero between its nodes, and
-//    the fine mesh clamps it at its new ones; those spaces are not nested,
-//    the coarse problems are Galerkin products all the same.)
+//  - the transfer: where a mesh refines another's 2 or 3 times per side
+//    (nested spaces), the Hermite interpolation P reproduces a coarse field
+//    that is one bicubic polynomial exactly (value, slopes and twist at the
+//    fine nodes, away from the clamped border), and where the plate is
+//    fully clamped the Galerkin product P^T A_fine P is the coarse mesh's
+//    own assembled stiffness and P^T b_fine its own load, to round-off. (The
+//    paper's clamping leaves w_xy free on the boundary: a coarse field's normal
+//    slope is then nonzero between its nodes, and the fine mesh clamps it at
+//    its new ones; those spaces are not nested, the coarse problems are
+//    Galerkin products all the same.)
 //  - the method: the same contact set and nodal DOFs as PDAS (1e-10
 //    relative) with KKT <= 1e-10, on every obstacle, material and load, on
 //    meshes that are a power of two times the coarsest and meshes that are
@@ -16,10 +18,14 @@
 //    unconstrained solution, against PDAS and the series solution.
 // (A plate lying on the obstacle at every node: tests/plate/raised_obstacle.)
 
+#include <unilateral/fe/bogner_fox_schmit.h>
 #include <unilateral/lcp/hierarchy.h>
+#include <unilateral/scenes/plate/assembly.h>
 
 #include "../test_tools.h"
 #include "plate_runs.h"
+
+#include <deal.II/dofs/dof_tools.h>
 
 #include <cmath>
 #include <iomanip>
@@ -73,9 +79,106 @@ namespace
     return text.str();
   }
 
-  /// The hierarchy of a 16 x 16 plate (16, 8, 4 cells per side) and of a
-  /// 20 x 12 one (20 x 12, 10 x 6, 5 x 6), fully clamped: each Galerkin
-  /// product against the coarse mesh's own assembly.
+  /// The hierarchy's rule for the next coarser count of a side (while it
+  /// has at least 8 cells: by 2 if even, by 3 if a multiple of 3, else
+  /// halved rounded up).
+  unsigned int
+  coarser(const unsigned int n)
+  {
+    return n < 8 ? n : n % 2 == 0 ? n / 2 : n % 3 == 0 ? n / 3 : (n + 1) / 2;
+  }
+
+  /// Per unknown of a plate run: its node and its component (w, w_x, w_y,
+  /// w_xy), numbered as the scene numbers its free DOFs.
+  std::vector<std::pair<dealii::Point<2>, unsigned int>>
+  unknowns(const plate_runs::Run &run, const bool clamp_twist)
+  {
+    const dealii::DoFHandler<2> &dof_handler = run.scene->get_dof_handler();
+    const auto free_dofs = unilateral::plate::number_free_dofs(
+      dof_handler.n_dofs(),
+      dealii::DoFTools::extract_boundary_dofs(
+        dof_handler, dealii::ComponentMask({true, true, true, clamp_twist})));
+    const std::vector<unsigned int> bfs_index =
+      unilateral::fe::bfs_local_indices(dof_handler.get_fe());
+    std::vector<std::pair<dealii::Point<2>, unsigned int>> result(
+      free_dofs.size());
+    std::vector<dealii::types::global_dof_index> local_dofs(bfs_index.size());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(local_dofs);
+        for (unsigned int i = 0; i < local_dofs.size(); ++i)
+          if (const auto k = free_dofs.index[local_dofs[i]]; k >= 0)
+            result[k] = {cell->vertex(bfs_index[i] / 4), bfs_index[i] % 4};
+      }
+    return result;
+  }
+
+  /// The derivative of @p p that DOF component @p component holds.
+  double
+  component_value(const test_tools::Polynomial &p,
+                  const dealii::Point<2>       &x,
+                  const unsigned int            component)
+  {
+    const unsigned int dx[] = {0, 1, 0, 1}, dy[] = {0, 0, 1, 1};
+    return p.derivative(x, dx[component], dy[component]);
+  }
+
+  /**
+   * P carries the coarse field whose unknowns are those of one bicubic
+   * polynomial p (scaled to be of order 1 on the plate) to p's value,
+   * slopes and twist at the fine nodes, to 1e-12 of the largest: at every
+   * fine node at least one coarse cell away from the clamped border (the
+   * coarse field equals p on the cells that touch no clamped node).
+   */
+  bool
+  reproduces_bicubic(const SparseMatrix    &P,
+                     const plate_runs::Run &coarse,
+                     const plate_runs::Run &fine,
+                     const double           h_x,
+                     const double           h_y,
+                     const double           length_x,
+                     const double           length_y,
+                     const bool             clamp_twist)
+  {
+    test_tools::Sequence             sequence(7);
+    std::vector<std::vector<double>> a(4, std::vector<double>(4));
+    for (unsigned int i = 0; i < 4; ++i)
+      for (unsigned int j = 0; j < 4; ++j)
+        a[i][j] =
+          sequence.next() / std::pow(length_x, i) / std::pow(length_y, j);
+    const test_tools::Polynomial p(a);
+
+    const auto coarse_unknowns = unknowns(coarse, clamp_twist);
+    const auto fine_unknowns   = unknowns(fine, clamp_twist);
+    if (static_cast<long>(coarse_unknowns.size()) != P.cols() ||
+        static_cast<long>(fine_unknowns.size()) != P.rows())
+      return false;
+    Vector coarse_field(P.cols());
+    for (long j = 0; j < P.cols(); ++j)
+      coarse_field[j] =
+        component_value(p, coarse_unknowns[j].first, coarse_unknowns[j].second);
+    const Vector fine_field = P * coarse_field;
+    double       largest = 0, error = 0;
+    unsigned int checked = 0;
+    const double margin  = 1e-9 * length_x;
+    for (long k = 0; k < P.rows(); ++k)
+      {
+        const dealii::Point<2> &x = fine_unknowns[k].first;
+        if (x[0] < h_x - margin || x[0] > length_x - h_x + margin ||
+            x[1] < h_y - margin || x[1] > length_y - h_y + margin)
+          continue;
+        const double truth = component_value(p, x, fine_unknowns[k].second);
+        largest            = std::max(largest, std::abs(truth));
+        error              = std::max(error, std::abs(fine_field[k] - truth));
+        ++checked;
+      }
+    return checked > 0 && error <= 1e-12 * largest;
+  }
+
+  /// The hierarchy of a plate, fully clamped: each Galerkin product
+  /// against the coarse mesh's own assembly, and the transfer against a
+  /// bicubic field. 16 x 16: 8 x 8, 4 x 4; 20 x 12: 10 x 6, 5 x 6;
+  /// 45 x 18 (factors 3 and 2): 15 x 9, 5 x 3.
   void
   check_transfer(const unsigned int n_x,
                  const unsigned int n_y,
@@ -89,18 +192,17 @@ namespace
     const auto &hierarchy = *fine.scene->problem().hierarchy;
     std::cout << n_x << " x " << n_y << " " << boundary << ": "
               << hierarchy.levels.size() << " levels" << std::endl;
-    SparseMatrix A_fine = fine.scene->problem().A;
-    Vector       b_fine = fine.scene->problem().b;
+    SparseMatrix    A_fine = fine.scene->problem().A;
+    Vector          b_fine = fine.scene->problem().b;
+    plate_runs::Run finer_run;
+    const auto     *finer = &fine;
+    unsigned int    c_x = n_x, c_y = n_y;
     for (std::size_t l = hierarchy.levels.size() - 1; l-- > 0;)
       {
-        // The coarse mesh of this level: the fine counts halved, rounded up.
-        unsigned int c_x = n_x, c_y = n_y;
-        for (std::size_t k = l + 1; k < hierarchy.levels.size(); ++k)
-          {
-            c_x = c_x >= 8 ? (c_x + 1) / 2 : c_x;
-            c_y = c_y >= 8 ? (c_y + 1) / 2 : c_y;
-          }
-        const auto coarse = plate_runs::run_plate(
+        // The coarse mesh of this level, by the hierarchy's rule.
+        c_x         = coarser(c_x);
+        c_y         = coarser(c_y);
+        auto coarse = plate_runs::run_plate(
           "transfer_" + std::to_string(c_x) + "_" + boundary.substr(0, 5),
           plate("steel", "psi3", "f1", c_x, c_y, boundary),
           "pdas");
@@ -125,9 +227,23 @@ namespace
                     coarse.scene->problem().constrained &&
                   hierarchy.levels[l].lower_bound ==
                     coarse.scene->problem().lower_bound);
-        A_fine = A;
-        b_fine = b;
+        verdict("  " + std::to_string(c_x) + " x " + std::to_string(c_y) +
+                  ": P reproduces a coarse bicubic field to 1e-12",
+                reproduces_bicubic(P,
+                                   coarse,
+                                   *finer,
+                                   100.0 / c_x,
+                                   100.0 / c_y,
+                                   100,
+                                   100,
+                                   boundary == "fully clamped"));
+        A_fine    = A;
+        b_fine    = b;
+        finer_run = std::move(coarse);
+        finer     = &finer_run;
       }
+    if (c_x != coarser(c_x) || c_y != coarser(c_y))
+      std::cout << "  the hierarchy stops early" << std::endl;
   }
 
   /// TNNMG against PDAS on one plate; returns the TNNMG run.
@@ -158,6 +274,7 @@ main()
   std::cout << "Transfer (nested meshes):" << std::endl;
   check_transfer(16, 16, "fully clamped");
   check_transfer(20, 12, "fully clamped");
+  check_transfer(45, 18, "fully clamped");
 
   std::cout << "TNNMG against PDAS:" << std::endl;
   for (const std::string obstacle : {"psi1", "psi2", "psi3"})
@@ -171,8 +288,10 @@ main()
                      plate("steel", "psi3", "f1", 32, 32),
                      "  subsection TNNMG\n    set Cycle = V\n  end\n");
   check_against_pdas("lead_psi2_f2_24", plate("lead", "psi2", "f2", 24, 24));
-  // Odd counts: 19 -> 10 -> 5 and 21 x 13 -> 11 x 7, not nested.
+  // Odd counts: 19 -> 10 -> 5 (not nested), 21 x 13 -> 7 x 7 (nested in x
+  // by 3, not in y), 45 -> 15 -> 5 (nested by 3).
   check_against_pdas("steel_psi3_f1_19", plate("steel", "psi3", "f1", 19, 19));
+  check_against_pdas("steel_psi3_f1_45", plate("steel", "psi3", "f1", 45, 45));
   check_against_pdas("bronze_psi3_f2_21x13",
                      plate("bronze", "psi3", "f2", 21, 13, "clamped", 150));
   check_against_pdas("steel_psi3_f1_24x16",

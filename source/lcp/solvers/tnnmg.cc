@@ -99,8 +99,8 @@ namespace unilateral::lcp
           "second visit corrects what the first left). The block "
           "Gauss-Seidel smoother alone does not give the biharmonic plate a "
           "rate independent of the mesh; the W-cycle's extra coarse work "
-          "keeps the number of cycles from growing as fast, and costs less "
-          "than the cycles it saves on the plate.",
+          "keeps the number of cycles from growing as fast, and on large "
+          "plates costs less than the cycles it saves.",
           Selection("V|W"));
       }
 

@@ -1,10 +1,13 @@
 /**
  * The plate's hierarchy of meshes for the multigrid methods
- * (lcp/hierarchy.h): each side halved, rounded up, as long as it has at
- * least 8 cells, so the coarsest mesh has 4 to 7 cells per side (or the
- * fine mesh's own count where that is smaller). A side of 2^k m cells gives
- * nested meshes; where a count is odd the coarse nodes fall between the fine
- * ones and the spaces are not nested. The transfer is the same either way:
+ * (lcp/hierarchy.h): each side, as long as it has at least 8 cells, halved
+ * if its count is even, else divided by 3 if it is a multiple of 3, else
+ * halved rounded up; so the coarsest mesh has 3 to 7 cells per side (or the
+ * fine mesh's own count where that is smaller). Dividing by 2 or 3 gives
+ * nested meshes (a bicubic Hermite field on the coarse mesh is one on the
+ * mesh refined 2 or 3 times per side: 90 -> 45 -> 15 -> 5, all nested);
+ * where an odd count is no multiple of 3 the coarse nodes fall between the
+ * fine ones and the spaces are not nested. The transfer is the same either way:
  * the coarse bicubic Hermite field evaluated at the fine nodes (w, w_x, w_y,
  * w_xy), exact where the spaces are nested; the Galerkin coarse problems of
  * the multigrid methods are then variational whatever the meshes.
@@ -21,13 +24,21 @@ namespace unilateral::plate
 {
   namespace
   {
-    // A side is halved while it has at least this many cells.
+    // A side is coarsened while it has at least this many cells.
     constexpr unsigned int coarsen_from = 8;
 
+    /// The next coarser count of a side: by a factor that keeps the
+    /// meshes nested where there is one (2, else 3), else halved rounded up.
     unsigned int
-    halved(const unsigned int n)
+    coarsened(const unsigned int n)
     {
-      return n >= coarsen_from ? (n + 1) / 2 : n;
+      if (n < coarsen_from)
+        return n;
+      if (n % 2 == 0)
+        return n / 2;
+      if (n % 3 == 0)
+        return n / 3;
+      return (n + 1) / 2;
     }
 
     /// Per vertex, its four free DOFs (w, w_x, w_y, w_xy; -1 if fixed).
@@ -158,8 +169,8 @@ namespace unilateral::plate
     for (Geometry geometry = parameters.geometry;;)
       {
         Geometry next = geometry;
-        next.n_x      = halved(geometry.n_x);
-        next.n_y      = halved(geometry.n_y);
+        next.n_x      = coarsened(geometry.n_x);
+        next.n_y      = coarsened(geometry.n_y);
         if (next.n_x == geometry.n_x && next.n_y == geometry.n_y)
           break;
         Parameters coarse_parameters = parameters;
