@@ -91,7 +91,10 @@ def generated(kind, m):
             "generate", (kind, m))
 
 
-def problem_list(quick):
+def problem_list(quick, walls=""):
+    if walls:  # the three walls at the given m alone (issue 24's m >= 100)
+        return [masonry(geometry, int(m)) for m in walls.split(",")
+                for geometry in ("stack bond", "running bond", "laminae")]
     if quick:
         return ([generated("laplacian", 30), generated("mixed", 15)] +
                 [masonry(g, 5) for g in ("stack bond", "running bond",
@@ -335,8 +338,18 @@ def main():
     parser.add_argument("--skip-build", action="store_true")
     parser.add_argument("--no-external", action="store_true",
                         help="run only our solvers")
+    parser.add_argument("--walls", default="",
+                        help="e.g. 100,225: only the three masonry walls "
+                             "at these m (instead of the default list)")
+    parser.add_argument("--ours", default=",".join(OURS),
+                        help="our methods to run (comma-separated)")
+    parser.add_argument("--theirs", default="",
+                        help="comma-separated substrings of the external "
+                             "solvers' labels to run (default: all)")
     args = parser.parse_args()
 
+    # A run of the large walls alone keeps the full list's results.
+    base = "walls" if args.walls else "results"
     install_and_build(args.skip_install, args.skip_build)
     scenes = available_scenes()
     os.makedirs(RESULTS, exist_ok=True)
@@ -349,7 +362,7 @@ def main():
                 "time / fastest of our converged methods." %
                 time.strftime("%Y-%m-%d %H:%M"), ""]
     rows = []
-    for name, kind, spec in problem_list(args.quick):
+    for name, kind, spec in problem_list(args.quick, args.walls):
         if args.only and not any(part in name for part in args.only.split(",")):
             continue
         directory, why = export_problem(name, kind, spec, scenes)
@@ -362,7 +375,7 @@ def main():
         runs = os.path.join(RESULTS, "runs", name)
         os.makedirs(runs, exist_ok=True)
         results = []
-        for method in OURS:
+        for method in args.ours.split(","):
             result = run_ours(method, directory, runs, args.repeats)
             log("  %-28s %-24s solve %-9s KKT %s" % (
                 result["solver"], result["status"],
@@ -370,6 +383,9 @@ def main():
             results.append(result)
         if not args.no_external:
             for label, driver, method, options in THEIRS:
+                if args.theirs and not any(
+                        part in label for part in args.theirs.split(",")):
+                    continue
                 result = run_theirs(label, driver, method, options, directory,
                                     runs, args.timeout, args.repeats)
                 log("  %-28s %-24s solve %-9s KKT %s" % (
@@ -391,14 +407,15 @@ def main():
                          "ratio_to_our_best": r.get("ratio", ""),
                          "message": r.get("message", "")})
         # Write as we go: a long run that is stopped keeps what it did.
-        with open(os.path.join(RESULTS, "results.csv"), "w",
+        with open(os.path.join(RESULTS, base + ".csv"), "w",
                   newline="") as f:
             writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
             writer.writeheader()
             writer.writerows(rows)
-        with open(os.path.join(RESULTS, "results.md"), "w") as f:
+        with open(os.path.join(RESULTS, base + ".md"), "w") as f:
             f.write("\n".join(markdown) + "\n")
-    log("results: %s/results.{csv,md}" % os.path.relpath(RESULTS, os.getcwd()))
+    log("results: %s/%s.{csv,md}" % (os.path.relpath(RESULTS, os.getcwd()),
+                                      base))
 
 
 if __name__ == "__main__":

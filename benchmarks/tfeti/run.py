@@ -166,8 +166,10 @@ def write_tables(rows, output, name):
                 "factor, solves, time | status | energy |\n")
         f.write("|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
+            method = r["method"] + (f" np {r['mpi_ranks']}"
+                                    if r.get("mpi_ranks") else "")
             if "energy" not in r:
-                f.write(f"| {r['geometry']} | {r['m']} | {r['method']} | "
+                f.write(f"| {r['geometry']} | {r['m']} | {method} | "
                         f"{r['wall']:.1f} | | | | | | {r['status']} | |\n")
                 continue
             dual = coarse = ""
@@ -179,8 +181,6 @@ def write_tables(rows, output, name):
                           f"{r['coarse_factor_nonzeros']:.2e}, "
                           f"{int(r['coarse_solves'])}, "
                           f"{r['coarse_factorisation_seconds'] + r['coarse_solve_seconds']:.1f} s")
-            method = r["method"] + (f" np {r['mpi_ranks']}"
-                                    if r.get("mpi_ranks") else "")
             f.write(f"| {r['geometry']} | {r['m']} | {method} | "
                     f"{r['wall']:.1f} | {r['solve']:.1f} | "
                     f"{r['peak_gb']:.2f} | {r['iterations']} + "
@@ -196,37 +196,43 @@ def plot(rows, output, name):
     except ImportError:
         print("no matplotlib: no plot")
         return
-    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.5))
-    for geometry in sorted({r["geometry"] for r in rows}):
+    geometries = sorted({r["geometry"] for r in rows})
+    figure, axes = plt.subplots(1, 1 + len(geometries),
+                                figsize=(4.2 * (1 + len(geometries)), 4.2),
+                                squeeze=False)
+    left = axes[0][0]
+    styles = {"tfeti": "o-", "pdas": "s--", "interior_point_pc": "^:",
+              "pdas_mumps": "D-.", "interior_point_pc_mumps": "v-."}
+    runs = sorted({(r["method"], int(r.get("mpi_ranks") or 0))
+                   for r in rows})
+    for geometry, right in zip(geometries, axes[0][1:]):
         tfeti = [r for r in rows if r["geometry"] == geometry
-                 and r["method"] == "tfeti" and r.get("products_with_F")]
+                 and r["method"] == "tfeti" and r.get("products_with_F")
+                 and int(r.get("mpi_ranks") or 0) <= 1]
         if tfeti:
             left.loglog([r["m"] for r in tfeti],
                         [r["products_with_F"] for r in tfeti], "o-",
                         label=geometry)
-        styles = {"tfeti": "o-", "pdas": "s--", "interior_point_pc": "^:",
-                  "pdas_mumps": "D-.", "interior_point_pc_mumps": "v-."}
-        runs = sorted({(r["method"], int(r.get("mpi_ranks") or 0))
-                       for r in rows})
+        # Wall time of each method (and number of ranks) on this geometry.
         for method, ranks in runs:
             done = [r for r in rows if r["geometry"] == geometry
                     and r["method"] == method
                     and int(r.get("mpi_ranks") or 0) == ranks
                     and r.get("energy")]
             if done:
-                label = f"{geometry}, {method}" + (f" np {ranks}"
-                                                   if ranks else "")
+                label = method + (f" np {ranks}" if ranks else "")
                 right.loglog([r["m"] for r in done],
                              [r["wall"] for r in done],
                              styles.get(method, "x-"), label=label)
+        right.set_title(geometry)
+        right.set_xlabel("m (blocks per side)")
+        right.set_ylabel("wall time, s")
+        right.legend(fontsize=7)
     left.set_xlabel("m (blocks per side)")
-    left.set_ylabel("products with F")
+    left.set_ylabel("TFETI's products with F")
     left.legend()
-    right.set_xlabel("m (blocks per side)")
-    right.set_ylabel("wall time, s")
-    right.legend(fontsize=7)
     figure.tight_layout()
-    figure.savefig(os.path.join(output, name + ".png"), dpi=120)
+    figure.savefig(os.path.join(output, name + ".png"), dpi=110)
 
 
 def main():
@@ -252,14 +258,20 @@ def main():
     parser.add_argument("--output", default=os.path.join(
         ROOT, "benchmarks", "results", "tfeti"))
     parser.add_argument("--replot", action="store_true",
-                        help="only the plot again, from NAME.csv")
+                        help="only the tables and the plot again, from "
+                             "NAME.csv")
     arguments = parser.parse_args()
     if arguments.replot:
+        def number(text):
+            value = float(text)
+            return int(value) if value.is_integer() else value
         with open(os.path.join(arguments.output,
                                arguments.name + ".csv")) as f:
-            rows = [{k: (float(v) if k not in ("geometry", "method",
-                                                "status") and v else v)
-                     for k, v in row.items()} for row in csv.DictReader(f)]
+            rows = [{k: (number(v) if k not in ("geometry", "method",
+                                                 "status") and v else v)
+                     for k, v in row.items() if v != ""}
+                    for row in csv.DictReader(f)]
+        write_tables(rows, arguments.output, arguments.name)
         plot(rows, arguments.output, arguments.name)
         return
     with open("/proc/loadavg") as f:
