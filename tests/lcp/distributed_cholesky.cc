@@ -10,7 +10,7 @@
 #include <unilateral/lcp/distributed_cholesky.h>
 #include <unilateral/lcp/sparse_cholesky.h>
 
-#include <deal.II/base/mpi.h>
+#include "../mpi_test_tools.h"
 
 #include <cmath>
 #include <iostream>
@@ -93,8 +93,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
-    std::cout.setstate(std::ios::failbit);
+  mpi_test::rank_0_prints();
 
   DistributedCholesky cholesky(MPI_COMM_WORLD);
   std::cout << "ranks: " << cholesky.n_ranks() << "\n";

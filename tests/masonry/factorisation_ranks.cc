@@ -7,9 +7,8 @@
 // walls: the paper's three at m = 5 and 10, one without gap (degenerate
 // contacts), and a 3D wall two blocks thick. Rank 0 prints; the two
 // outputs differ only in the number of ranks.
+#include "../mpi_test_tools.h"
 #include "tfeti_test_tools.h"
-
-#include <deal.II/base/mpi.h>
 
 using namespace tfeti_test;
 
@@ -54,12 +53,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int                       rank =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  if (rank != 0)
-    std::cout.setstate(std::ios::failbit);
-  std::cout << "ranks: "
-            << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << "\n";
+  const unsigned int                       rank = mpi_test::rank_0_prints();
+  std::cout << "ranks: " << mpi_test::n_ranks() << "\n";
   const std::string name = "factorisation_rank_" + std::to_string(rank);
 
   for (const std::string geometry : {"stack bond", "running bond", "laminae"})

@@ -6,7 +6,7 @@
 // is 0 on every rank. Rank 0 checks and prints.
 #include <unilateral/application.h>
 
-#include <deal.II/base/mpi.h>
+#include "../mpi_test_tools.h"
 
 #include <filesystem>
 #include <fstream>
@@ -55,10 +55,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int                       rank =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const unsigned int n_ranks =
-    dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  const unsigned int                       rank    = mpi_test::rank_0_prints();
+  const unsigned int                       n_ranks = mpi_test::n_ranks();
 
   if (rank == 0)
     std::ofstream("wall.prm")

@@ -5,9 +5,8 @@
 // that the answers on 1 and 2 ranks are the same. The number of ranks that
 // shared the subdomains is printed: the two outputs differ only there.
 // Rank 0 prints; every rank writes its runs into its own folder.
+#include "../mpi_test_tools.h"
 #include "tfeti_test_tools.h"
-
-#include <deal.II/base/mpi.h>
 
 using namespace tfeti_test;
 
@@ -15,10 +14,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int                       rank =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  if (rank != 0)
-    std::cout.setstate(std::ios::failbit);
+  const unsigned int                       rank = mpi_test::rank_0_prints();
   const std::string name = "tfeti_rank_" + std::to_string(rank);
 
   for (const std::string geometry : {"stack bond", "running bond", "laminae"})
