@@ -84,6 +84,10 @@ main()
   bad_input("m = 0", masonry_prm("  set Blocks per side = 0\n"));
   bad_input("m = -3", masonry_prm("  set Blocks per side = -3\n"));
   bad_input("r = -1", masonry_prm("  set Refinement = -1\n"));
+  bad_input(
+    "Factorisation = mumps without an MPI launcher",
+    masonry_prm("  set Blocks per side = 2\n",
+                "subsection Solver\n  set Factorisation = mumps\nend\n"));
   bad_input("g < 0",
             masonry_prm("  subsection Boundary conditions\n"
                         "    set Relative gap = -0.1\n  end\n"));
