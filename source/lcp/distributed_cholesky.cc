@@ -61,6 +61,10 @@ namespace unilateral::lcp
     Index         local_first  = 0; ///< first row of this rank
     Index         local_end    = 0;
     bool          factor_valid = false;
+    // This rank's rows of the analysed pattern, in compressed rows with
+    // global columns (PETSc's index type), kept for the values of every
+    // later factorisation.
+    std::vector<PetscInt> row_start, columns;
 
     ~Implementation()
     {
@@ -77,37 +81,26 @@ namespace unilateral::lcp
       factor_valid = false;
     }
 
-    /// This rank's rows of A in compressed rows with global columns (A is
-    /// symmetric: its column j, as Eigen stores it, is row j).
+    /// The symbolic analysis of A's pattern (fingerprint @p hash): this
+    /// rank's rows (A is symmetric: its column j, as Eigen stores it, is row
+    /// j), the distributed matrix, then MUMPS's ordering and symbolic
+    /// factorisation.
     void
-    local_rows(const SparseMatrix       &A,
-               std::vector<PetscInt>    &row_start,
-               std::vector<PetscInt>    &columns,
-               std::vector<PetscScalar> &values) const
-    {
-      const auto *start = A.outerIndexPtr();
-      row_start.assign(1, 0);
-      columns.assign(A.innerIndexPtr() + start[local_first],
-                     A.innerIndexPtr() + start[local_end]);
-      values.assign(A.valuePtr() + start[local_first],
-                    A.valuePtr() + start[local_end]);
-      for (Index i = local_first; i < local_end; ++i)
-        row_start.push_back(start[i + 1] - start[local_first]);
-    }
-
-    /// The symbolic analysis of A's pattern: the distributed matrix with
-    /// its rows, then MUMPS's ordering and symbolic factorisation.
-    void
-    analyse(const SparseMatrix &A, Counters &counters)
+    analyse(const SparseMatrix &A, const std::uint64_t hash, Counters &counters)
     {
       destroy();
-      n           = A.rows();
-      local_first = first_row(n, rank, n_ranks);
-      local_end   = first_row(n, rank + 1, n_ranks);
-      std::vector<PetscInt>    row_start, columns;
-      std::vector<PetscScalar> values;
-      local_rows(A, row_start, columns, values);
-      const PetscInt local = local_end - local_first;
+      n                 = A.rows();
+      local_first       = first_row(n, rank, n_ranks);
+      local_end         = first_row(n, rank + 1, n_ranks);
+      const auto *start = A.outerIndexPtr();
+      row_start.assign(1, 0);
+      for (Index i = local_first; i < local_end; ++i)
+        row_start.push_back(start[i + 1] - start[local_first]);
+      columns.assign(A.innerIndexPtr() + start[local_first],
+                     A.innerIndexPtr() + start[local_end]);
+      const std::vector<PetscScalar> values(A.valuePtr() + start[local_first],
+                                            A.valuePtr() + start[local_end]);
+      const PetscInt                 local = local_end - local_first;
       check(MatCreate(communicator, &matrix), "MatCreate");
       check(MatSetSizes(matrix, local, local, n, n), "MatSetSizes");
       check(MatSetType(matrix, MATAIJ), "MatSetType");
@@ -124,7 +117,7 @@ namespace unilateral::lcp
       check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
       check(MatCholeskyFactorSymbolic(factor, matrix, nullptr, &info),
             "MatCholeskyFactorSymbolic");
-      pattern_hash = hash_pattern(A);
+      pattern_hash = hash;
       ++counters.symbolic_analyses;
     }
 
@@ -132,18 +125,18 @@ namespace unilateral::lcp
     void
     update_values(const SparseMatrix &A)
     {
-      const auto *start = A.outerIndexPtr();
+      const double *values = A.valuePtr() + A.outerIndexPtr()[local_first];
       for (Index i = local_first; i < local_end; ++i)
         {
-          const PetscInt              row = i;
-          const std::vector<PetscInt> columns(A.innerIndexPtr() + start[i],
-                                              A.innerIndexPtr() + start[i + 1]);
+          const PetscInt row   = i;
+          const PetscInt begin = row_start[i - local_first];
+          const PetscInt end   = row_start[i - local_first + 1];
           check(MatSetValues(matrix,
                              1,
                              &row,
-                             static_cast<PetscInt>(columns.size()),
-                             columns.data(),
-                             A.valuePtr() + start[i],
+                             end - begin,
+                             columns.data() + begin,
+                             values + begin,
                              INSERT_VALUES),
                 "MatSetValues");
         }
@@ -204,13 +197,14 @@ namespace unilateral::lcp
       throw std::logic_error("DistributedCholesky needs a compressed matrix");
     // Every rank holds the same A; the analysis is kept only if every rank
     // finds its pattern unchanged (they must all call MUMPS alike).
-    const bool same_pattern = impl.factor != nullptr && impl.n == A.rows() &&
-                              impl.pattern_hash == hash_pattern(A);
+    const std::uint64_t hash = hash_pattern(A);
+    const bool          same_pattern =
+      impl.factor != nullptr && impl.n == A.rows() && impl.pattern_hash == hash;
     if (dealii::Utilities::MPI::min(same_pattern ? 1 : 0, impl.communicator) ==
         1)
       impl.update_values(A);
     else
-      impl.analyse(A, counters);
+      impl.analyse(A, hash, counters);
 
     // Null pivots detected and counted (INFOG(28)) rather than factorised
     // into a solve that moves a floating body by 1e10: CNTL(3) is their

@@ -267,7 +267,7 @@ namespace unilateral::masonry
                   << "\" format=\"ascii\">\n";
         for (const auto &cell :
              discretisation.triangulation.active_cell_iterators())
-          if (n_ranks == 1 || in_piece(cell))
+          if (in_piece(cell))
             {
               const unsigned int value =
                 name == std::string("block_id") ?
@@ -294,37 +294,36 @@ namespace unilateral::masonry
       if (!file)
         throw InputError("cannot write '" + (directory / name).string() + "'");
     };
-    if (n_ranks == 1)
-      {
-        write("solution_000.vtu", text);
-        std::ofstream pvd(directory / "solution.pvd");
-        dealii::DataOutBase::write_pvd_record(pvd, {{0.0, "solution_000.vtu"}});
-        return;
-      }
+    // The file the PVD record names: the VTU, or the PVTU joining the pieces.
+    const std::string record_name =
+      n_ranks == 1 ? "solution_000.vtu" : "solution_000.pvtu";
     const auto piece = [](const unsigned int r) {
       return "solution_000." + std::to_string(r) + ".vtu";
     };
-    write(piece(rank), text);
+    write(n_ranks == 1 ? record_name : piece(rank), text);
     if (rank != 0)
       return;
-    std::vector<std::string> pieces;
-    for (unsigned int r = 0; r < n_ranks; ++r)
-      pieces.push_back(piece(r));
-    std::ostringstream record;
-    data_out.write_pvtu_record(record, pieces);
-    // The record declares the point data only; the cell data above too.
-    std::string       pvtu      = record.str();
-    const std::size_t points_at = pvtu.find("<PPoints>");
-    AssertThrow(points_at != std::string::npos,
-                dealii::ExcMessage("unexpected PVTU layout from DataOut"));
-    pvtu.insert(points_at,
-                "<PCellData Scalars=\"block_id\">\n"
-                "      <PDataArray type=\"Int32\" Name=\"block_id\"/>\n"
-                "      <PDataArray type=\"Int32\" Name=\"material\"/>\n"
-                "    </PCellData>\n    ");
-    write("solution_000.pvtu", pvtu);
+    if (n_ranks > 1)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(piece(r));
+        std::ostringstream record;
+        data_out.write_pvtu_record(record, pieces);
+        // The record declares the point data only; the cell data above too.
+        std::string       pvtu      = record.str();
+        const std::size_t points_at = pvtu.find("<PPoints>");
+        AssertThrow(points_at != std::string::npos,
+                    dealii::ExcMessage("unexpected PVTU layout from DataOut"));
+        pvtu.insert(points_at,
+                    "<PCellData Scalars=\"block_id\">\n"
+                    "      <PDataArray type=\"Int32\" Name=\"block_id\"/>\n"
+                    "      <PDataArray type=\"Int32\" Name=\"material\"/>\n"
+                    "    </PCellData>\n    ");
+        write(record_name, pvtu);
+      }
     std::ofstream pvd(directory / "solution.pvd");
-    dealii::DataOutBase::write_pvd_record(pvd, {{0.0, "solution_000.pvtu"}});
+    dealii::DataOutBase::write_pvd_record(pvd, {{0.0, record_name}});
   }
 
   template void
