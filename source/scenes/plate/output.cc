@@ -99,6 +99,12 @@ namespace unilateral::plate
                       const std::filesystem::path &directory,
                       const std::string           &name)
     {
+      // deal.II's default zlib level (best compression) made writing the
+      // file most of a run on meshes of 90 x 90 and up; the masonry scene
+      // writes with the fastest level too.
+      dealii::DataOutBase::VtkFlags flags;
+      flags.compression_level = dealii::DataOutBase::VtkFlags::best_speed;
+      data_out.set_flags(flags);
       const std::string vtu = name + ".vtu";
       {
         std::ofstream file(directory / vtu);
