@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace unilateral::lcp
 {
@@ -126,11 +128,24 @@ namespace unilateral::lcp
           Eigen::HouseholderQR<DenseMatrix>(shape.rigid_motions)
             .householderQ() *
           DenseMatrix::Identity(n, shape.rigid_motions.cols());
-        const double      s       = shape.stiffness.diagonal().mean();
-        const DenseMatrix RRt     = R * R.transpose();
-        const DenseMatrix regular = shape.stiffness + s * RRt;
-        pseudo_inverse.push_back(
-          regular.llt().solve(DenseMatrix::Identity(n, n)) - RRt / s);
+        const double            s       = shape.stiffness.diagonal().mean();
+        const DenseMatrix       RRt     = R * R.transpose();
+        const DenseMatrix       regular = shape.stiffness + s * RRt;
+        Eigen::LLT<DenseMatrix> llt(regular);
+        // K_s with more null space than R (a subdomain in two parts, or a
+        // hinge) leaves K_s + s R R^T singular and K_s^+ meaningless; the
+        // answer would still be made exact by the projection step, so
+        // nothing else would show it. The scene must split such parts.
+        const Vector pivots = llt.matrixLLT().diagonal();
+        if (llt.info() != Eigen::Success ||
+            std::pow(pivots.minCoeff() / pivots.maxCoeff(), 2) < 1e-14)
+          throw std::logic_error(
+            "TFETI: the stiffness of a subdomain has rigid motions beyond "
+            "the " +
+            std::to_string(R.cols()) +
+            " it was given (a subdomain in parts): the tearing is wrong");
+        pseudo_inverse.push_back(llt.solve(DenseMatrix::Identity(n, n)) -
+                                 RRt / s);
         rigid.push_back(R);
       }
   }

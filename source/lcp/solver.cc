@@ -33,23 +33,6 @@ namespace unilateral::lcp
       return *found;
     }
 
-    // "a, b and c" of the methods with @p property (for help texts).
-    std::string
-    methods_where(const std::function<bool(const SolverInfo &)> &property)
-    {
-      std::vector<std::string> names;
-      for (const SolverInfo &info : SolverRegistry::all())
-        if (property(info))
-          names.push_back(info.name);
-      std::string result;
-      for (std::size_t k = 0; k < names.size(); ++k)
-        result += (k == 0                ? "" :
-                   k + 1 == names.size() ? " and " :
-                                           ", ") +
-                  names[k];
-      return result;
-    }
-
     // "a: 500, b: 10|S| + 100" (for the help of 'Maximum iterations').
     std::string
     default_iteration_limits()
@@ -78,6 +61,22 @@ namespace unilateral::lcp
       return result.empty() ? "no method hands over" : result;
     }
   } // namespace
+
+  std::string
+  methods_where(const std::function<bool(const SolverInfo &)> &property)
+  {
+    std::vector<std::string> names;
+    for (const SolverInfo &info : SolverRegistry::all())
+      if (property(info))
+        names.push_back(info.name);
+    std::string result;
+    for (std::size_t k = 0; k < names.size(); ++k)
+      result += (k == 0                ? "" :
+                 k + 1 == names.size() ? " and " :
+                                         ", ") +
+                names[k];
+    return result;
+  }
 
   const SolverInfo &
   default_method()

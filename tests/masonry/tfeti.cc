@@ -12,9 +12,60 @@
 // contacts whose multipliers are positive) makes it exact: in one or two
 // iterations where TFETI's active set is right, so that is checked too (a
 // wrong dual still ends exact, after many more).
+// Long blocks are cut into pieces glued by equalities ('Tearing/Largest
+// aspect ratio', default 2: the laminae above are cut): the laminae with
+// their blocks whole and cut give PDAS's answer, with the subdomains and
+// multipliers counted; and a U-shaped block whose upper slice falls in two
+// parts (the slice must be split, or a part would float with the rigid
+// motions of the whole slice).
 #include "tfeti_test_tools.h"
 
+#include <fstream>
+
 using namespace tfeti_test;
+
+namespace
+{
+  double
+  figure(const lcp::Report &report, const std::string &name)
+  {
+    for (const auto &[key, value] : report.figures)
+      if (key == name)
+        return value;
+    return -1;
+  }
+
+  /// A U of unit squares: the base x in [0, 3], y in [0, 1] and two posts
+  /// x in [0, 1] and [2, 3] up to y = 7, one block (entity 1); boundary 1
+  /// the base's lower side, 2 the left side.
+  void
+  write_u_block(const std::string &file)
+  {
+    const auto node = [](const int i, const int j) { return 4 * j + i + 1; };
+    std::ostringstream elements;
+    int                n = 0;
+    for (int j = 0; j < 7; ++j)
+      for (int i = 0; i < 3; ++i)
+        if (j == 0 || i != 1)
+          elements << ++n << " 3 2 1 1 " << node(i, j) << ' ' << node(i + 1, j)
+                   << ' ' << node(i + 1, j + 1) << ' ' << node(i, j + 1)
+                   << "\n";
+    for (int i = 0; i < 3; ++i)
+      elements << ++n << " 1 2 1 11 " << node(i, 0) << ' ' << node(i + 1, 0)
+               << "\n";
+    for (int j = 0; j < 7; ++j)
+      elements << ++n << " 1 2 2 12 " << node(0, j) << ' ' << node(0, j + 1)
+               << "\n";
+    std::ofstream out(file);
+    out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n32\n";
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 4; ++i)
+        out << node(i, j) << ' ' << i << ' ' << j << " 0\n";
+    out << "$EndNodes\n$Elements\n"
+        << n << "\n"
+        << elements.str() << "$EndElements\n";
+  }
+} // namespace
 
 int
 main()
@@ -58,6 +109,37 @@ main()
                "running bond",
                10,
                "    set Relative gap = 0\n");
+
+  for (const std::string ratio : {"0", "2"})
+    {
+      const Run result =
+        against_pdas("laminae, m = 10, 'Largest aspect ratio' = " + ratio,
+                     "laminae",
+                     10,
+                     "",
+                     "tfeti",
+                     "subsection Masonry\n  subsection Tearing\n    set "
+                     "Largest aspect ratio = " +
+                       ratio + "\n  end\nend\n");
+      std::cout << "  " << figure(result.report, "subdomains")
+                << " subdomains, " << figure(result.report, "multipliers")
+                << " multipliers\n";
+    }
+  {
+    write_u_block("u_block.msh");
+    const std::string u_block =
+      "subsection Masonry\n  set Geometry = mesh file\n  set Mesh file = "
+      "u_block.msh\n  subsection Boundary conditions\n    set Relative gap "
+      "= 0\n    set Signorini = 1\n    set Normal displacement zero = 2\n"
+      "    set Traction boundaries =\n  end\nend\n";
+    const Run reference =
+      run(parse(prm_text("stack bond", 1, "pdas") + u_block), "u_block");
+    const Run result =
+      run(parse(prm_text("stack bond", 1, "tfeti") + u_block), "u_block");
+    compare("a U-shaped block on the ground", reference, result);
+    std::cout << "  " << figure(result.report, "subdomains") << " subdomains, "
+              << figure(result.report, "multipliers") << " multipliers\n";
+  }
 
   // A block in the air, above a slab on the ground: nothing holds it.
   {

@@ -309,6 +309,11 @@ namespace unilateral::lcp
   const SolverInfo &
   default_method();
 
+  /// "a, b and c": the registered methods with @p property, for help texts
+  /// (which thus never name a method themselves).
+  std::string
+  methods_where(const std::function<bool(const SolverInfo &)> &property);
+
   /// The method of the projection step ('finishes_approximate_answers').
   const SolverInfo &
   projection_method();

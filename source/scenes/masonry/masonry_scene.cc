@@ -284,15 +284,27 @@ namespace unilateral::masonry
 
     // The wall torn into its blocks, for a method that works on them.
     if (lcp::SolverRegistry::get(context.solver.method).needs_tearing)
-      lcp_problem.tearing =
-        tear_into_blocks<dim>(state->discretisation,
-                              state->contacts,
-                              *state->change,
-                              state->loads,
-                              problem_sizes.n_blocks,
-                              unit,
-                              parameters.geometry.coincidence_tolerance *
-                                problem_sizes.cell_size);
+      {
+        unsigned int n_cut = 0;
+        lcp_problem.tearing =
+          tear_into_blocks<dim>(state->discretisation,
+                                state->contacts,
+                                *state->change,
+                                state->loads,
+                                problem_sizes.n_blocks,
+                                parameters.tearing.largest_aspect_ratio,
+                                unit,
+                                parameters.geometry.coincidence_tolerance *
+                                  problem_sizes.cell_size,
+                                n_cut);
+        if (n_cut > 0)
+          context.stage(registered_name,
+                        quantity(n_cut, "long block") +
+                          " cut into pieces ('Tearing/Largest aspect "
+                          "ratio'): " +
+                          quantity(lcp_problem.tearing->n_subdomains(),
+                                   "subdomain"));
+      }
   }
 
   // u = C~^-1 u~, and for every constraint its normal gap (the gap variable,

@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/lcp/solver.h>
 #include <unilateral/scenes/masonry/parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -24,6 +25,7 @@ namespace unilateral::masonry
     const std::string geometry_section  = "Masonry";
     const std::string boundary_section  = "Masonry/Boundary conditions";
     const std::string materials_section = "Masonry/Materials";
+    const std::string tearing_section   = "Masonry/Tearing";
 
     std::vector<double>
     get_doubles(dealii::ParameterHandler &prm,
@@ -533,12 +535,46 @@ namespace unilateral::masonry
   }
 
   void
+  TearingParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tearing");
+    prm.declare_entry(
+      "Largest aspect ratio",
+      "2",
+      dealii::Patterns::Double(0),
+      "Methods that tear the structure into subdomains (" +
+        lcp::methods_where(
+          [](const lcp::SolverInfo &info) { return info.needs_tearing; }) +
+        "): a block whose bounding box is longer than this many times its "
+        "shortest side is cut into pieces about as long as that side, "
+        "glued by equality multipliers (each piece floats like a block). A "
+        "long block alone (a lamina: one block of m cells) makes the dual "
+        "problem's condition grow with m. 0 keeps every block whole.");
+    prm.leave_subsection();
+  }
+
+  void
+  TearingParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tearing");
+    largest_aspect_ratio = prm.get_double("Largest aspect ratio");
+    prm.leave_subsection();
+    check_parameter(largest_aspect_ratio == 0 || largest_aspect_ratio >= 1,
+                    tearing_section,
+                    "Largest aspect ratio",
+                    largest_aspect_ratio,
+                    "is below 1, which no block can meet; give 0 (blocks "
+                    "whole) or a number >= 1");
+  }
+
+  void
   Parameters::declare_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Masonry");
     GeometryParameters::declare_parameters(prm);
     BoundaryParameters::declare_parameters(prm);
     MaterialParameters::declare_parameters(prm);
+    TearingParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -549,6 +585,7 @@ namespace unilateral::masonry
     geometry.parse_parameters(prm);
     boundary.parse_parameters(prm);
     materials.parse_parameters(prm);
+    tearing.parse_parameters(prm);
     prm.leave_subsection();
     const bool by_layout =
       materials.assignment == MaterialAssignment::alternating_courses ||

@@ -1,5 +1,6 @@
 #include <unilateral/scenes/masonry/tearing.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/dofs/dof_tools.h>
 
 #include <algorithm>
@@ -8,16 +9,19 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <unordered_map>
 
 namespace unilateral::masonry
 {
   namespace
   {
-    /// One block: its physical DOFs in the local order, its stiffness and
-    /// load, and the positions of its DOFs.
+    /// One subdomain (a block, or a piece of a long block): its physical
+    /// DOFs in the local order, its stiffness and load, and the positions
+    /// of its DOFs.
     template <int dim>
-    struct TornBlock
+    struct Piece
     {
+      unsigned int                    block = 0;
       std::vector<DofIndex>           dofs;
       lcp::DenseMatrix                stiffness;
       lcp::Vector                     load;
@@ -26,11 +30,11 @@ namespace unilateral::masonry
       unsigned int                    shape = 0;
     };
 
-    /// The rigid motions of a block about its centre: the translations and
+    /// The rigid motions of a piece about its centre: the translations and
     /// the rotations e_k x (x - x_c) (one in 2D, about z; three in 3D).
     template <int dim>
     lcp::DenseMatrix
-    rigid_motions(const TornBlock<dim> &block)
+    rigid_motions(const Piece<dim> &block)
     {
       constexpr unsigned int n_rotations = dim == 2 ? 1 : 3;
       const std::size_t      n           = block.dofs.size();
@@ -56,6 +60,108 @@ namespace unilateral::masonry
         }
       return R;
     }
+
+    /**
+     * The piece of every cell (indexed by active_cell_index), and the
+     * block of every piece. A block whose bounding box is longer than
+     * @p largest_aspect_ratio times its shortest side s is cut by a grid of
+     * round(L_d / s) slices along each side L_d, each cell going to the
+     * slice of its centre; the pieces are then split into their
+     * face-connected parts, so that each floats with the rigid motions
+     * alone (a mesh file's odd block may leave a slice in two parts). A
+     * block that is not cut is one piece. @p n_cut counts the cut blocks.
+     */
+    template <int dim>
+    std::vector<unsigned int>
+    cut_into_pieces(const dealii::DoFHandler<dim> &dof_handler,
+                    const unsigned int             n_blocks,
+                    const double                   largest_aspect_ratio,
+                    std::vector<unsigned int>     &block_of_piece,
+                    unsigned int                  &n_cut)
+    {
+      const auto &triangulation = dof_handler.get_triangulation();
+      std::vector<dealii::BoundingBox<dim>> box(n_blocks);
+      std::vector<char>                     seen(n_blocks, 0);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          const auto cell_box = cell->bounding_box();
+          const auto b        = cell->material_id();
+          if (seen[b])
+            box[b].merge_with(cell_box);
+          else
+            box[b] = cell_box;
+          seen[b] = 1;
+        }
+      // The slices of each block along each side (1 where not cut).
+      std::vector<std::array<unsigned int, dim>> slices(n_blocks);
+      n_cut = 0;
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        {
+          double shortest = box[b].side_length(0), longest = shortest;
+          for (unsigned int d = 1; d < dim; ++d)
+            {
+              shortest = std::min(shortest, box[b].side_length(d));
+              longest  = std::max(longest, box[b].side_length(d));
+            }
+          const bool cut = largest_aspect_ratio > 0 &&
+                           longest > largest_aspect_ratio * shortest;
+          n_cut += cut;
+          for (unsigned int d = 0; d < dim; ++d)
+            slices[b][d] =
+              cut ?
+                std::max(1L, std::lround(box[b].side_length(d) / shortest)) :
+                1;
+        }
+      const auto slice_of = [&](const auto &cell) {
+        const unsigned int       b      = cell->material_id();
+        const dealii::Point<dim> centre = cell->center();
+        unsigned int             index  = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double t = (centre[d] - box[b].lower_bound(d)) /
+                             box[b].side_length(d) * slices[b][d];
+            const unsigned int k =
+              std::min(slices[b][d] - 1,
+                       static_cast<unsigned int>(std::max(0.0, t)));
+            index = index * slices[b][d] + k;
+          }
+        return std::make_pair(b, index);
+      };
+
+      // Face-connected parts of each (block, slice): a flood fill through
+      // the faces between cells of the same block and slice.
+      const unsigned int        unset = dealii::numbers::invalid_unsigned_int;
+      std::vector<unsigned int> piece(triangulation.n_active_cells(), unset);
+      block_of_piece.clear();
+      std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator> stack;
+      for (const auto &start : dof_handler.active_cell_iterators())
+        if (piece[start->active_cell_index()] == unset)
+          {
+            const unsigned int p = block_of_piece.size();
+            block_of_piece.push_back(start->material_id());
+            const auto slice                  = slice_of(start);
+            piece[start->active_cell_index()] = p;
+            stack.assign(1, start);
+            while (!stack.empty())
+              {
+                const auto cell = stack.back();
+                stack.pop_back();
+                for (const unsigned int f : cell->face_indices())
+                  if (!cell->at_boundary(f))
+                    {
+                      const auto neighbour = cell->neighbor(f);
+                      if (neighbour->is_active() &&
+                          piece[neighbour->active_cell_index()] == unset &&
+                          slice_of(neighbour) == slice)
+                        {
+                          piece[neighbour->active_cell_index()] = p;
+                          stack.push_back(neighbour);
+                        }
+                    }
+              }
+          }
+      return piece;
+    }
   } // namespace
 
   template <int dim>
@@ -65,8 +171,10 @@ namespace unilateral::masonry
                    const ChangeOfVariables<dim> &change,
                    const LoadData<dim>          &loads,
                    const unsigned int            n_blocks,
+                   const double                  largest_aspect_ratio,
                    const double                  force_unit,
-                   const double                  tolerance)
+                   const double                  tolerance,
+                   unsigned int                 &n_cut_blocks)
   {
     const dealii::DoFHandler<dim> &dof_handler = discretisation.dof_handler;
     const unsigned int             n_dofs      = dof_handler.n_dofs();
@@ -76,8 +184,19 @@ namespace unilateral::masonry
                                                  dof_handler,
                                                  support);
 
-    // Each block's DOFs and their components.
-    std::vector<TornBlock<dim>>                  blocks(n_blocks);
+    std::vector<unsigned int>       block_of_piece;
+    const std::vector<unsigned int> piece_of_cell =
+      cut_into_pieces(dof_handler,
+                      n_blocks,
+                      largest_aspect_ratio,
+                      block_of_piece,
+                      n_cut_blocks);
+    const unsigned int n_pieces = block_of_piece.size();
+
+    // Each piece's DOFs and their components.
+    std::vector<Piece<dim>> pieces(n_pieces);
+    for (unsigned int p = 0; p < n_pieces; ++p)
+      pieces[p].block = block_of_piece[p];
     std::vector<unsigned int>                    component_of_dof(n_dofs, 0);
     std::vector<dealii::types::global_dof_index> dofs(dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -85,17 +204,21 @@ namespace unilateral::masonry
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
-            blocks[cell->material_id()].dofs.push_back(dofs[i]);
+            pieces[piece_of_cell[cell->active_cell_index()]].dofs.push_back(
+              dofs[i]);
             component_of_dof[dofs[i]] =
               discretisation.fe->system_to_component_index(i).first;
           }
       }
 
     // Numbered by component, then by position (rounded to the tolerance)
-    // relative to the block's lowest corner, the last coordinate first.
-    std::vector<unsigned int> local_of_dof(n_dofs, 0);
-    for (TornBlock<dim> &block : blocks)
+    // relative to the piece's lowest corner, the last coordinate first. A
+    // DOF on the cut between pieces has a local number in each.
+    std::vector<std::unordered_map<DofIndex, unsigned int>> local_of_dof(
+      n_pieces);
+    for (unsigned int p = 0; p < n_pieces; ++p)
       {
+        Piece<dim> &block = pieces[p];
         std::sort(block.dofs.begin(), block.dofs.end());
         block.dofs.erase(std::unique(block.dofs.begin(), block.dofs.end()),
                          block.dofs.end());
@@ -118,44 +241,47 @@ namespace unilateral::masonry
                   });
         block.component.resize(block.dofs.size());
         block.position.resize(block.dofs.size());
+        local_of_dof[p].reserve(block.dofs.size());
         for (std::size_t j = 0; j < block.dofs.size(); ++j)
           {
-            local_of_dof[block.dofs[j]] = static_cast<unsigned int>(j);
-            block.component[j]          = component_of_dof[block.dofs[j]];
-            block.position[j]           = support[block.dofs[j]];
+            local_of_dof[p][block.dofs[j]] = static_cast<unsigned int>(j);
+            block.component[j]             = component_of_dof[block.dofs[j]];
+            block.position[j]              = support[block.dofs[j]];
           }
         block.stiffness =
           lcp::DenseMatrix::Zero(block.dofs.size(), block.dofs.size());
         block.load = lcp::Vector::Zero(block.dofs.size());
       }
 
-    // The stiffness and load of every block: its cells' matrices summed.
-    CellSystem<dim> cell_system(discretisation, loads);
+    // The stiffness and load of every piece: its cells' matrices summed.
+    CellSystem<dim>           cell_system(discretisation, loads);
+    std::vector<unsigned int> local(dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         cell->get_dof_indices(dofs);
         cell_system.reinit(cell);
-        TornBlock<dim> &block = blocks[cell->material_id()];
+        const unsigned int p     = piece_of_cell[cell->active_cell_index()];
+        Piece<dim>        &block = pieces[p];
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          local[i] = local_of_dof[p].at(dofs[i]);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
-            const unsigned int a = local_of_dof[dofs[i]];
-            block.load[a] += cell_system.rhs[i] / force_unit;
+            block.load[local[i]] += cell_system.rhs[i] / force_unit;
             for (unsigned int j = 0; j < dofs_per_cell; ++j)
-              block.stiffness(a, local_of_dof[dofs[j]]) +=
+              block.stiffness(local[i], local[j]) +=
                 cell_system.matrix[i * dofs_per_cell + j] / force_unit;
           }
       }
 
-    // Shapes: blocks with the same stiffness (to round-off) share it.
+    // Shapes: pieces with the same stiffness (to round-off) share it.
     auto                      tearing = std::make_shared<lcp::Tearing>();
     std::vector<unsigned int> representative;
-    for (unsigned int b = 0; b < n_blocks; ++b)
+    for (Piece<dim> &block : pieces)
       {
-        TornBlock<dim> &block = blocks[b];
-        unsigned int    shape = 0;
+        unsigned int shape = 0;
         for (; shape < representative.size(); ++shape)
           {
-            const TornBlock<dim> &other = blocks[representative[shape]];
+            const Piece<dim> &other = pieces[representative[shape]];
             if (other.dofs.size() == block.dofs.size() &&
                 other.component == block.component &&
                 (other.stiffness - block.stiffness).cwiseAbs().maxCoeff() <=
@@ -164,50 +290,69 @@ namespace unilateral::masonry
           }
         if (shape == representative.size())
           {
-            representative.push_back(b);
+            representative.push_back(
+              static_cast<unsigned int>(&block - pieces.data()));
             tearing->shapes.push_back({block.stiffness, rigid_motions(block)});
           }
         block.shape = shape;
       }
 
-    // The physical numbering: the blocks of each shape consecutive.
-    std::vector<unsigned int> order(n_blocks);
+    // The physical numbering: the pieces of each shape consecutive. A DOF
+    // on a cut has a copy in each piece; the first is the one the
+    // constraints and the map to the LCP take, and each further copy is
+    // glued to it by an equality x_first - x_copy = 0.
+    std::vector<unsigned int> order(n_pieces);
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(),
                      order.end(),
                      [&](const unsigned int a, const unsigned int b) {
-                       return blocks[a].shape < blocks[b].shape;
+                       return pieces[a].shape < pieces[b].shape;
                      });
-    std::vector<lcp::Index> physical(n_dofs, 0);
-    tearing->f.resize(n_dofs);
-    lcp::Index next = 0;
-    for (const unsigned int b : order)
+    const lcp::Index                               unset = -1;
+    std::vector<lcp::Index>                        physical(n_dofs, unset);
+    std::vector<std::pair<lcp::Index, lcp::Index>> glued;
+    std::vector<double>                            load;
+    lcp::Index                                     next = 0;
+    for (const unsigned int p : order)
       {
-        const TornBlock<dim> &block = blocks[b];
+        const Piece<dim> &block = pieces[p];
         if (tearing->groups.empty() ||
             tearing->groups.back().shape != block.shape)
           tearing->groups.push_back({block.shape, next, 0});
         ++tearing->groups.back().n_subdomains;
         for (std::size_t j = 0; j < block.dofs.size(); ++j)
           {
-            physical[block.dofs[j]] = next;
-            tearing->f[next]        = block.load[j];
+            if (physical[block.dofs[j]] == unset)
+              physical[block.dofs[j]] = next;
+            else
+              glued.emplace_back(physical[block.dofs[j]], next);
+            load.push_back(block.load[j]);
             ++next;
           }
       }
+    tearing->f = Eigen::Map<const lcp::Vector>(load.data(), load.size());
 
+    std::vector<unsigned int> pieces_of_block(n_blocks, 0);
+    for (const Piece<dim> &piece : pieces)
+      ++pieces_of_block[piece.block];
     std::vector<dealii::Point<dim>> centre_of_subdomain;
-    for (const unsigned int b : order)
+    std::vector<unsigned int>       block_of_subdomain;
+    std::vector<char>               whole_block;
+    for (const unsigned int p : order)
       {
         dealii::Point<dim> centre;
-        for (const auto &p : blocks[b].position)
-          centre += p / static_cast<double>(blocks[b].position.size());
+        for (const auto &x : pieces[p].position)
+          centre += x / static_cast<double>(pieces[p].position.size());
         centre_of_subdomain.push_back(centre);
+        block_of_subdomain.push_back(pieces[p].block);
+        whole_block.push_back(pieces_of_block[pieces[p].block] == 1);
       }
-    tearing->describe_subdomain = [order,
-                                   centre_of_subdomain](const lcp::Index k) {
+    tearing->describe_subdomain = [block_of_subdomain,
+                                   centre_of_subdomain,
+                                   whole_block](const lcp::Index k) {
       std::ostringstream text;
-      text << "block " << order[k] << " (centre (";
+      text << (whole_block[k] ? "block " : "a piece of block ")
+           << block_of_subdomain[k] << " (centre (";
       for (unsigned int d = 0; d < dim; ++d)
         text << (d > 0 ? ", " : "") << centre_of_subdomain[k][d];
       text << "))";
@@ -255,6 +400,13 @@ namespace unilateral::masonry
         add_node_row(roller.node, roller.normal, 1.0);
         c.push_back(0);
       }
+    for (const auto &[first, copy] : glued)
+      {
+        const auto row = static_cast<lcp::Index>(c.size());
+        rows.emplace_back(row, first, 1.0);
+        rows.emplace_back(row, copy, -1.0);
+        c.push_back(0);
+      }
     tearing->B.resize(static_cast<lcp::Index>(c.size()), next);
     tearing->B.setFromTriplets(rows.begin(), rows.end());
     tearing->B.makeCompressed();
@@ -278,7 +430,9 @@ namespace unilateral::masonry
                       const LoadData<2> &,
                       unsigned int,
                       double,
-                      double);
+                      double,
+                      double,
+                      unsigned int &);
   template std::shared_ptr<const lcp::Tearing>
   tear_into_blocks<3>(const Discretisation<3> &,
                       const ContactSet<3> &,
@@ -286,5 +440,7 @@ namespace unilateral::masonry
                       const LoadData<3> &,
                       unsigned int,
                       double,
-                      double);
+                      double,
+                      double,
+                      unsigned int &);
 } // namespace unilateral::masonry

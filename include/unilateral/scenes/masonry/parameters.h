@@ -149,11 +149,26 @@ namespace unilateral::masonry
     classes_of_blocks(const Layout &layout) const;
   };
 
+  /// How the methods that work on subdomains (TFETI) tear the structure.
+  struct TearingParameters
+  {
+    /// A block longer than this many times its shortest side is cut into
+    /// pieces; 0: blocks stay whole.
+    double largest_aspect_ratio = 2;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   struct Parameters
   {
     GeometryParameters geometry;
     BoundaryParameters boundary;
     MaterialParameters materials;
+    TearingParameters  tearing;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
