@@ -9,6 +9,7 @@ CSV and Markdown, and plots products with F and time against m.
       [--geometries "stack bond,running bond,laminae"]
       [--methods tfeti,pdas,interior_point_pc] [--timeout 900]
       [--set "TFETI/Penalty=10" ...] [--name serial] [--ranks 1,2]
+      [--dimension 3 --blocks-through 2]
 
 Each run: g = H/2, no VTU output, peak memory from /usr/bin/time -v (the
 largest rank's under mpirun; each rank's is in summary.json too), the rest
@@ -21,7 +22,12 @@ N = 1): TFETI (route 2: its subdomains shared among the ranks) and the
 *_mumps methods (route 1: PDAS or the interior point with 'Factorisation =
 mumps', every factorisation spread over the ranks); the other methods run
 serially. Under mpirun every rank runs BLAS on --threads-per-rank threads
-(default 1: the ranks already fill the cores).
+(default 1: the ranks already fill the cores). With --dimension 3 the walls
+are the built-in 3D walls: the 2D wall extruded, --blocks-through blocks
+behind each other, each one H deep ('Thickness' = blocks-through), the
+front face on rollers as in prm/masonry_wall_3d.prm (without it every block
+may slide along z: TFETI then refuses the wall as a mechanism); the table
+names them "stack bond 3D" and so on.
 """
 import argparse
 import csv
@@ -53,11 +59,20 @@ def over_ranks(method):
     return method == "tfeti" or method.endswith("_mumps")
 
 
-def prm_text(geometry, m, method, settings, refinement, directory, name):
+def prm_text(geometry, m, method, settings, arguments, directory, name):
     solver_name, own = METHODS[method]
     lines = ["set Scene = masonry", "subsection Masonry",
              f"  set Geometry = {geometry}", f"  set Blocks per side = {m}",
-             f"  set Refinement = {refinement}", "end",
+             f"  set Refinement = {arguments.refinement}"]
+    if arguments.dimension == 3:
+        lines += ["  set Dimension = 3",
+                  f"  set Blocks through the thickness = "
+                  f"{arguments.blocks_through}",
+                  f"  set Thickness = {arguments.blocks_through}",
+                  "  subsection Boundary conditions",
+                  "    set Normal displacement zero = left, right, front, "
+                  "base where x > s", "  end"]
+    lines += ["end",
              "subsection Solver", f"  set Method = {solver_name}"]
     for subsection, entry, value in own + settings:
         if subsection:
@@ -82,7 +97,7 @@ def run(executable, geometry, m, method, ranks, arguments, directory):
             subsection, entry = path.rsplit("/", 1)
             settings.append((subsection, entry, value))
     with open(prm, "w") as f:
-        f.write(prm_text(geometry, m, method, settings, arguments.refinement,
+        f.write(prm_text(geometry, m, method, settings, arguments,
                          directory, name))
     command = ["/usr/bin/time", "-v", executable, prm]
     environment = dict(os.environ)
@@ -161,15 +176,16 @@ def write_tables(rows, output, name):
         writer.writeheader()
         writer.writerows(rows)
     with open(os.path.join(output, name + ".md"), "w") as f:
-        f.write("| geometry | m | method | wall s | solve s | peak GB | "
+        f.write("| geometry | m | unknowns | method | wall s | solve s | "
+                "peak GB | "
                 "iterations | products with F (outer/inner) | coarse size, "
                 "factor, solves, time | status | energy |\n")
-        f.write("|---|---|---|---|---|---|---|---|---|---|---|\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             method = r["method"] + (f" np {r['mpi_ranks']}"
                                     if r.get("mpi_ranks") else "")
             if "energy" not in r:
-                f.write(f"| {r['geometry']} | {r['m']} | {method} | "
+                f.write(f"| {r['geometry']} | {r['m']} | | {method} | "
                         f"{r['wall']:.1f} | | | | | | {r['status']} | |\n")
                 continue
             dual = coarse = ""
@@ -181,7 +197,7 @@ def write_tables(rows, output, name):
                           f"{r['coarse_factor_nonzeros']:.2e}, "
                           f"{int(r['coarse_solves'])}, "
                           f"{r['coarse_factorisation_seconds'] + r['coarse_solve_seconds']:.1f} s")
-            f.write(f"| {r['geometry']} | {r['m']} | {method} | "
+            f.write(f"| {r['geometry']} | {r['m']} | {r['n']} | {method} | "
                     f"{r['wall']:.1f} | {r['solve']:.1f} | "
                     f"{r['peak_gb']:.2f} | {r['iterations']} + "
                     f"{r['projection_iterations']} | {dual} | {coarse} | "
@@ -244,6 +260,9 @@ def main():
                         default="stack bond,running bond,laminae")
     parser.add_argument("--methods", default="tfeti,pdas,interior_point_pc")
     parser.add_argument("--refinement", type=int, default=0)
+    parser.add_argument("--dimension", type=int, choices=(2, 3), default=2)
+    parser.add_argument("--blocks-through", type=int, default=2,
+                        help="3D: blocks behind each other in z")
     parser.add_argument("--timeout", type=float, default=900)
     parser.add_argument("--ranks", default="",
                         help="e.g. 1,2: TFETI and the *_mumps methods under "
@@ -287,11 +306,12 @@ def main():
                     for ranks in counts:
                         row = run(arguments.executable, geometry, m, method,
                                   ranks, arguments, directory)
-                        row.update(geometry=geometry, m=m, method=method,
-                                   mpi_ranks=ranks)
+                        row.update(geometry=geometry + (
+                            " 3D" if arguments.dimension == 3 else ""),
+                                   m=m, method=method, mpi_ranks=ranks)
                         rows.append(row)
                         label = method + (f" np {ranks}" if ranks else "")
-                        print(f"{geometry:13s} m = {m:4d} {label:18s} "
+                        print(f"{row['geometry']:16s} m = {m:4d} {label:18s} "
                               f"{describe(row)}", flush=True)
                     write_tables(rows, arguments.output, arguments.name)
     with open("/proc/loadavg") as f:
