@@ -91,6 +91,9 @@ main()
   bad_input("g < 0",
             masonry_prm("  subsection Boundary conditions\n"
                         "    set Relative gap = -0.1\n  end\n"));
+  bad_input("Largest aspect ratio = 0.5",
+            masonry_prm("  subsection Tearing\n"
+                        "    set Largest aspect ratio = 0.5\n  end\n"));
   bad_input("nu = 0.5",
             masonry_prm("  subsection Materials\n"
                         "    set Poisson's ratio = 0.5\n  end\n"));
