@@ -225,9 +225,14 @@ namespace unilateral::lcp
                      "problem has no unique solution";
           }
       }
+    // Also where the load does not drive that motion (a 3D wall whose
+    // blocks may slide along z unloaded): the problem then has solutions,
+    // which a method on the whole problem finds.
     return "the coarse matrix G G^T is singular: the subdomains together "
            "have a free rigid motion (a mechanism: some are held only by "
-           "others that are free themselves)";
+           "others that are free themselves); TFETI needs every rigid "
+           "motion held, also one that the load does not drive: hold it by "
+           "a support, or choose a method that does not tear the problem";
   }
 
   Vector

@@ -17,7 +17,8 @@
 // their blocks whole and cut give PDAS's answer, with the subdomains and
 // multipliers counted; and a U-shaped block whose upper slice falls in two
 // parts (the slice must be split, or a part would float with the rigid
-// motions of the whole slice).
+// motions of the whole slice). A 3D wall free to slide along z, unloaded
+// that way: TFETI refuses it with a message that says what to do.
 #include "tfeti_test_tools.h"
 
 #include <fstream>
@@ -139,6 +140,20 @@ main()
     compare("a U-shaped block on the ground", reference, result);
     std::cout << "  " << figure(result.report, "subdomains") << " subdomains, "
               << figure(result.report, "multipliers") << " multipliers\n";
+  }
+
+  // A 3D wall without the front rollers: the wall may slide along z, a
+  // mechanism that the load does not drive. TFETI, which needs every rigid
+  // motion held, refuses it and says what to do.
+  {
+    const RunOf<3> result =
+      run<3>(parse("subsection Masonry\n  set Dimension = 3\n  set Blocks "
+                   "through the thickness = 2\n  set Thickness = 2\nend\n" +
+                   prm_text("stack bond", 2, "tfeti")),
+             "sliding");
+    std::cout << "3D stack bond free to slide along z: status "
+              << to_string(result.report.status) << ": "
+              << result.report.message << "\n";
   }
 
   // A block in the air, above a slab on the ground: nothing holds it.
