@@ -104,8 +104,11 @@ namespace unilateral::masonry
               shortest = std::min(shortest, box[b].side_length(d));
               longest  = std::max(longest, box[b].side_length(d));
             }
-          const bool cut = largest_aspect_ratio > 0 &&
-                           longest > largest_aspect_ratio * shortest;
+          // A block exactly at the ratio (a 2H x H brick at 2) stays whole,
+          // whatever the rounding of its cells' coordinates.
+          const bool cut =
+            largest_aspect_ratio > 0 &&
+            longest > largest_aspect_ratio * shortest * (1 + 1e-8);
           n_cut += cut;
           for (unsigned int d = 0; d < dim; ++d)
             slices[b][d] =
