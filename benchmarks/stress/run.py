@@ -63,7 +63,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
 MASONRY_SOLVERS = ["pdas", "pdpc", "psor", "lssnn", "block_pivoting",
-                   "interior_point", "graves_sc"]
+                   "interior_point", "graves_sc", "tfeti"]
 PLATE_SOLVERS = ["pdas", "interior_point", "block_pivoting", "pdpc", "psor",
                  "lssnn", "graves_sc"]
 REFERENCE_SOLVERS = ["graves_sc", "lssnn", "block_pivoting", "pdas", "pdpc"]
