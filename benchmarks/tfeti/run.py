@@ -125,6 +125,9 @@ def run(executable, geometry, m, method, ranks, arguments, directory):
             summary = json.load(f)
     except (OSError, ValueError):
         return {"status": "no summary: " + process.stderr[-300:], "wall": wall}
+    if "energy" not in summary:  # refused or failed before solving
+        return {"status": summary["status"] + ": " + summary.get("message", ""),
+                "wall": wall}
     figures = summary.get("method", {})
     result = {"wall": wall, "peak_gb": peak_kb / 1e6,
               "status": summary["status"], "energy": summary["energy"],

@@ -145,12 +145,20 @@ namespace unilateral::lcp
     // The regularisation the attempt's method gets (relative eps, 0: none):
     // 'auto' is the problem's need, raised to the method's own preference
     // (PSOR converges at a rate set by eps; the projection makes the answer
-    // exact anyway).
+    // exact anyway). Where bodies can float, the approximate methods that
+    // work on A itself (the interior-point ones) get it too: a semidefinite
+    // LCP's solutions can form an unbounded set (a block free to move away
+    // from a joint, which no load drives: the back leaf of a 3D wall), whose
+    // centre an interior iterate follows off to infinity; A + eps d I has
+    // one solution, which the projection step then makes exact.
     double
     relative_regularisation(const Attempt &attempt)
     {
-      const SolverInfo &info = *attempt.method;
-      if (!info.needs_definite_matrix)
+      const SolverInfo &info          = *attempt.method;
+      const bool        bodies_float  = attempt.auto_regularisation > 0;
+      const bool        works_on_A    = !info.needs_definite_matrix;
+      const bool        unbounded_set = bodies_float && !info.exact;
+      if (works_on_A && !unbounded_set)
         return 0;
       if (attempt.parameters.regularisation >= 0)
         return attempt.parameters.regularisation;
@@ -235,16 +243,18 @@ namespace unilateral::lcp
       if (!report.converged() || !parameters.projection || exact_answer)
         return outcome;
 
-      // A method that ran on A itself (pdpc, interior_point) continues from
-      // the problem's regularisation.
+      // An interior-point method (approximate, on A itself unless bodies
+      // float) continues from the problem's regularisation, from an active
+      // set by its own indicators.
+      const bool   interior_point = !info.needs_definite_matrix && !info.exact;
       const double first_eps =
-        regularise ?
+        regularise && !interior_point ?
           report.regularisation :
           1e3 * std::max(attempt.auto_regularisation, 1e-12) * mean_diagonal;
       const FirstActiveSet first_active_set =
-        info.gives_active_set      ? FirstActiveSet::given :
-        !regularise && !info.exact ? FirstActiveSet::interior_point :
-                                     FirstActiveSet::test_on_u;
+        info.gives_active_set ? FirstActiveSet::given :
+        interior_point        ? FirstActiveSet::interior_point :
+                                FirstActiveSet::test_on_u;
       project(problem,
               parameters,
               first_eps,
