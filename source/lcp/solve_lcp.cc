@@ -145,20 +145,19 @@ namespace unilateral::lcp
     // The regularisation the attempt's method gets (relative eps, 0: none):
     // 'auto' is the problem's need, raised to the method's own preference
     // (PSOR converges at a rate set by eps; the projection makes the answer
-    // exact anyway). Where bodies can float, the approximate methods that
-    // work on A itself (the interior-point ones) get it too: a semidefinite
-    // LCP's solutions can form an unbounded set (a block free to move away
-    // from a joint, which no load drives: the back leaf of a 3D wall), whose
-    // centre an interior iterate follows off to infinity; A + eps d I has
-    // one solution, which the projection step then makes exact.
+    // exact anyway). Where bodies can float, the interior-point methods get
+    // it too: a semidefinite LCP's solutions can form an unbounded set (a
+    // block free to move away from a joint, which no load drives: the back
+    // leaf of a 3D wall), whose centre an interior iterate follows off to
+    // infinity; A + eps d I has one solution, which the projection step
+    // then makes exact.
     double
     relative_regularisation(const Attempt &attempt)
     {
-      const SolverInfo &info          = *attempt.method;
-      const bool        bodies_float  = attempt.auto_regularisation > 0;
-      const bool        works_on_A    = !info.needs_definite_matrix;
-      const bool        unbounded_set = bodies_float && !info.exact;
-      if (works_on_A && !unbounded_set)
+      const SolverInfo &info         = *attempt.method;
+      const bool        bodies_float = attempt.auto_regularisation > 0;
+      if (!info.needs_definite_matrix &&
+          !(bodies_float && info.follows_central_path()))
         return 0;
       if (attempt.parameters.regularisation >= 0)
         return attempt.parameters.regularisation;
@@ -243,12 +242,14 @@ namespace unilateral::lcp
       if (!report.converged() || !parameters.projection || exact_answer)
         return outcome;
 
-      // An interior-point method (approximate, on A itself unless bodies
-      // float) continues from the problem's regularisation, from an active
-      // set by its own indicators.
-      const bool   interior_point = !info.needs_definite_matrix && !info.exact;
+      // An approximate method that ran on A itself, and an interior-point
+      // method (on A + eps d I only where bodies float), continue from the
+      // problem's regularisation, from an active set by the interior
+      // indicators.
+      const bool interior_point =
+        (!regularise && !info.exact) || info.follows_central_path();
       const double first_eps =
-        regularise && !interior_point ?
+        regularise && !info.follows_central_path() ?
           report.regularisation :
           1e3 * std::max(attempt.auto_regularisation, 1e-12) * mean_diagonal;
       const FirstActiveSet first_active_set =

@@ -204,7 +204,12 @@ namespace unilateral::lcp
       "positive definite matrix (" +
         methods_where(
           [](const SolverInfo &info) { return info.needs_definite_matrix; }) +
-        "), followed by the projection step. 'auto' takes 1e-9 where the "
+        ") and, where bodies can float, by the interior-point methods (" +
+        methods_where(
+          [](const SolverInfo &info) { return info.follows_central_path(); }) +
+        ": a floating body's solutions can form an unbounded set, which "
+        "their iterates would follow), each followed by the projection "
+        "step. 'auto' takes 1e-9 where the "
         "scene's bodies can float (masonry: blocks are free to move, so A is "
         "singular) and 0 elsewhere (the plate, LCP files), where 1e-9 follows "
         "if the method meets a singular system. A number >= 0 overrides it.");

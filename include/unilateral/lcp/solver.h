@@ -284,6 +284,18 @@ namespace unilateral::lcp
     /// which the scenes that can build one build for such a method);
     /// refuses a problem without one.
     bool needs_hierarchy = false;
+
+    /// An interior-point method: approximate, on A itself and the whole
+    /// problem (not torn, not on a hierarchy). Its iterates follow the
+    /// central path, so where a floating body's solutions form an unbounded
+    /// set they follow it off (it is then given A + eps d I), and its end
+    /// is read by interior_point_active_set() (projection.h).
+    bool
+    follows_central_path() const
+    {
+      return !needs_definite_matrix && !exact && !needs_tearing &&
+             !needs_hierarchy;
+    }
     /// The method of the projection step: exact, warm-started, it finishes
     /// an approximate or regularised answer on A itself (exactly one method
     /// sets it).
