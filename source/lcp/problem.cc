@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
 
 namespace unilateral::lcp
 {
@@ -214,6 +215,23 @@ namespace unilateral::lcp
     const double max_entry = check_finite_entries(problem);
     check_symmetry(problem, max_entry);
     check_and_complete_diagonal(problem);
+  }
+
+  std::vector<Index>
+  diagonal_positions(const SparseMatrix &A)
+  {
+    std::vector<Index> position(A.outerSize(), -1);
+    if (A.isCompressed())
+      for (Index j = 0; j < A.outerSize(); ++j)
+        for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k)
+          if (A.innerIndexPtr()[k] == j)
+            position[j] = k;
+    for (const Index k : position)
+      if (k < 0)
+        throw std::logic_error("diagonal missing from the pattern of a "
+                               "compressed A (call check_and_normalise "
+                               "first)");
+    return position;
   }
 
   double

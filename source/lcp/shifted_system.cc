@@ -1,6 +1,5 @@
 #include <unilateral/lcp/shifted_system.h>
 
-#include <stdexcept>
 
 namespace unilateral::lcp
 {
@@ -8,16 +7,8 @@ namespace unilateral::lcp
     : A(A)
     , counters(counters)
     , shifted(A)
-    , diagonal_position(A.rows(), -1)
+    , diagonal_position(diagonal_positions(A))
   {
-    for (Index j = 0; j < A.outerSize(); ++j)
-      for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k)
-        if (A.innerIndexPtr()[k] == j)
-          diagonal_position[j] = k;
-    for (const Index position : diagonal_position)
-      if (position < 0)
-        throw std::logic_error("ShiftedSystem: diagonal missing from pattern "
-                               "(call check_and_normalise first)");
     // One analysis serves every iteration: worth a second ordering where
     // AMD's is poor.
     cholesky.try_nested_dissection = true;

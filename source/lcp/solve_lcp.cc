@@ -168,14 +168,11 @@ namespace unilateral::lcp
     }
 
     /**
-     * A + eps I in A's own storage, for the run of one method: each stored
-     * diagonal entry is shifted in place and put back, value for value, when
-     * this goes out of scope (also on an exception). A regularised copy of
-     * the Problem would double the largest matrix in memory: 2.3 GB for the
-     * stack bond m = 600, the difference between fitting on this machine
-     * and not (benchmarks/tfeti/README.md, "The largest walls"). A matrix
-     * without every diagonal entry stored, or not compressed, is left alone
-     * (shifted() false): the caller copies it then.
+     * A + eps I in A's own storage, for the run of one method: each diagonal
+     * entry is shifted in place and put back, value for value, when this
+     * goes out of scope (also on an exception). A regularised copy of the
+     * Problem would double the largest matrix in memory (benchmarks/tfeti/
+     * README.md, "The largest walls").
      *
      * The values of a Problem's matrix are a heap array the Problem points
      * to, not part of the (const) Problem object, so writing them through
@@ -186,49 +183,31 @@ namespace unilateral::lcp
     {
     public:
       DiagonalShift(const Problem &problem, const double shift)
+        : values(const_cast<SparseMatrix &>(problem.A).valuePtr())
+        , position(diagonal_positions(problem.A))
+        , saved(position.size())
       {
-        auto &A = const_cast<SparseMatrix &>(problem.A);
-        if (!A.isCompressed())
-          return;
-        std::vector<double *> diagonal(A.outerSize(), nullptr);
-        for (Index j = 0; j < A.outerSize(); ++j)
+        for (std::size_t j = 0; j < position.size(); ++j)
           {
-            const auto *const first = A.innerIndexPtr() + A.outerIndexPtr()[j];
-            const auto *const last =
-              A.innerIndexPtr() + A.outerIndexPtr()[j + 1];
-            const auto *const at = std::lower_bound(first, last, j);
-            if (at == last || *at != j)
-              return;
-            diagonal[j] = A.valuePtr() + (at - A.innerIndexPtr());
-          }
-        entries = std::move(diagonal);
-        saved.resize(entries.size());
-        for (std::size_t j = 0; j < entries.size(); ++j)
-          {
-            saved[j] = *entries[j];
-            *entries[j] += shift;
+            saved[j] = values[position[j]];
+            values[position[j]] += shift;
           }
       }
 
       ~DiagonalShift()
       {
-        for (std::size_t j = 0; j < entries.size(); ++j)
-          *entries[j] = saved[j];
+        for (std::size_t j = 0; j < position.size(); ++j)
+          values[position[j]] = saved[j];
       }
 
       DiagonalShift(const DiagonalShift &) = delete;
       DiagonalShift &
       operator=(const DiagonalShift &) = delete;
 
-      bool
-      shifted() const
-      {
-        return !entries.empty() || saved.size() > 0;
-      }
-
     private:
-      std::vector<double *> entries;
-      std::vector<double>   saved;
+      double *const            values;
+      const std::vector<Index> position;
+      std::vector<double>      saved;
     };
 
     /// What an attempt ended with.
@@ -267,24 +246,13 @@ namespace unilateral::lcp
         run_method(attempt, problem, solution, report, progress);
       else
         {
-          report.regularisation = relative_eps * mean_diagonal;
-          std::optional<DiagonalShift> in_place;
-          Problem                      copy;
+          std::optional<DiagonalShift> shifted;
           {
             PhaseTimer timer(report, "regularise");
-            in_place.emplace(problem, report.regularisation);
-            if (!in_place->shifted())
-              {
-                copy = problem;
-                for (Index j = 0; j < copy.size(); ++j)
-                  copy.A.coeffRef(j, j) += report.regularisation;
-              }
+            report.regularisation = relative_eps * mean_diagonal;
+            shifted.emplace(problem, report.regularisation);
           }
-          run_method(attempt,
-                     in_place->shifted() ? problem : copy,
-                     solution,
-                     report,
-                     progress);
+          run_method(attempt, problem, solution, report, progress);
         } // A's diagonal restored
       outcome.method_status = report.status;
 

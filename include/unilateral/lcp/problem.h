@@ -102,6 +102,12 @@ namespace unilateral::lcp
   void
   check_and_normalise(Problem &problem);
 
+  /// Where each diagonal entry of @p A sits in its value array (A
+  /// compressed, every diagonal entry stored: what check_and_normalise()
+  /// makes of a Problem's A); std::logic_error otherwise.
+  std::vector<Index>
+  diagonal_positions(const SparseMatrix &A);
+
   /// The objective 1/2 u^T A u - b^T u.
   double
   energy(const Problem &problem, const Vector &u);

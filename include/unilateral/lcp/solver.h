@@ -296,6 +296,7 @@ namespace unilateral::lcp
       return !needs_definite_matrix && !exact && !needs_tearing &&
              !needs_hierarchy;
     }
+
     /// The method of the projection step: exact, warm-started, it finishes
     /// an approximate or regularised answer on A itself (exactly one method
     /// sets it).

@@ -7,7 +7,6 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
@@ -31,18 +30,27 @@ namespace unilateral::masonry
       unsigned int                    shape = 0;
     };
 
+    /// The mean of a piece's DOF positions.
+    template <int dim>
+    dealii::Point<dim>
+    centre(const Piece<dim> &piece)
+    {
+      dealii::Point<dim> result;
+      for (const auto &p : piece.position)
+        result += p / static_cast<double>(piece.position.size());
+      return result;
+    }
+
     /// The rigid motions of a piece about its centre: the translations and
     /// the rotations e_k x (x - x_c) (one in 2D, about z; three in 3D).
     template <int dim>
     lcp::DenseMatrix
     rigid_motions(const Piece<dim> &piece)
     {
-      constexpr unsigned int n_rotations = dim == 2 ? 1 : 3;
-      const std::size_t      n           = piece.dofs.size();
-      dealii::Point<dim>     centre;
-      for (const auto &p : piece.position)
-        centre += p / static_cast<double>(n);
-      lcp::DenseMatrix R = lcp::DenseMatrix::Zero(n, dim + n_rotations);
+      constexpr unsigned int   n_rotations = dim == 2 ? 1 : 3;
+      const std::size_t        n           = piece.dofs.size();
+      const dealii::Point<dim> centre      = masonry::centre(piece);
+      lcp::DenseMatrix         R = lcp::DenseMatrix::Zero(n, dim + n_rotations);
       for (std::size_t j = 0; j < n; ++j)
         {
           const dealii::Tensor<1, dim> r = piece.position[j] - centre;
@@ -368,10 +376,7 @@ namespace unilateral::masonry
       std::vector<char>               whole_block;
       for (const unsigned int p : order)
         {
-          dealii::Point<dim> centre;
-          for (const auto &x : pieces[p].position)
-            centre += x / static_cast<double>(pieces[p].position.size());
-          centre_of_subdomain.push_back(centre);
+          centre_of_subdomain.push_back(centre(pieces[p]));
           block_of_subdomain.push_back(pieces[p].block);
           whole_block.push_back(pieces_of_block[pieces[p].block] == 1);
         }
