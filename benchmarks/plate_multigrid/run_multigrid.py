@@ -8,9 +8,12 @@ time of one product with the finest A, and whether both found the same
 plate (cn, smallest and centre deflection).
 
   /usr/bin/python3 benchmarks/plate_multigrid/run_multigrid.py [--sizes 90 64 128 256 512]
-      [--pdas-max 256] [--executable build/unilateral]
+      [--pdas-max 256] [--executable build/unilateral] [--baseline old/unilateral]
 
 PDAS above --pdas-max is not run (512 x 512: about 150 s and 12 GB).
+--baseline: TNNMG of another build too, run just before the new one on each
+mesh (so that the machine's drift falls on both alike), compared in a second
+table (baseline.csv).
 Prints the table, writes results.csv and multigrid.png here
 (--table-only: both again from results.csv).
 """
@@ -57,16 +60,23 @@ end
 """)
 
 
-def run(executable, n, method, directory):
-    prm = os.path.join(directory, f"{method}_{n}.prm")
+def run(executable, n, method, directory, label=None):
+    label = label or method
+    prm = os.path.join(directory, f"{label}_{n}.prm")
     write_prm(prm, n, method, directory)
+    if label != method:
+        with open(prm) as file:
+            text = file.read().replace(f"Run name      = {method}_{n}",
+                                       f"Run name      = {label}_{n}")
+        with open(prm, "w") as file:
+            file.write(text)
     start = time.time()
     process = subprocess.run(["/usr/bin/time", "-v", executable, prm],
                              capture_output=True, text=True)
     wall = time.time() - start
-    summary_file = os.path.join(directory, f"{method}_{n}", "summary.json")
+    summary_file = os.path.join(directory, f"{label}_{n}", "summary.json")
     if process.returncode == 1 or not os.path.exists(summary_file):
-        sys.exit(f"run failed: {method} {n}\n{process.stdout}\n"
+        sys.exit(f"run failed: {label} {n}\n{process.stdout}\n"
                  f"{process.stderr}")
     summary = json.load(open(summary_file))
     rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)",
@@ -75,7 +85,7 @@ def run(executable, n, method, directory):
                         r"iterations, (\d+) [VW]-cycles", process.stdout)
     product = re.search(r"one product with A on the finest level (\S+) s",
                         process.stdout)
-    return {"n": n, "method": method, "unknowns": summary["n_unknowns"],
+    return {"n": n, "method": label, "unknowns": summary["n_unknowns"],
             "wall_s": wall, "solve_s": summary["time"]["solve"],
             "max_rss_gb": int(rss.group(1)) / 1024**2 if rss else float("nan"),
             "status": summary["status"], "kkt": summary["kkt"]["max"],
@@ -94,6 +104,9 @@ def main():
     parser.add_argument("--pdas-max", type=int, default=256)
     parser.add_argument("--executable",
                         default=os.path.join(HERE, "../../build/unilateral"))
+    parser.add_argument("--baseline", default=None,
+                        help="another build's executable, for TNNMG side "
+                        "by side")
     parser.add_argument("--directory", default="/tmp/plate_multigrid")
     parser.add_argument("--table-only", action="store_true",
                         help="the table and plot again from results.csv")
@@ -112,23 +125,49 @@ def main():
 
     rows = []
     for n in arguments.sizes:
-        for method in ["tnnmg", "pdas"]:
-            if method == "pdas" and n > arguments.pdas_max:
-                continue
-            rows.append(run(arguments.executable, n, method,
-                            arguments.directory))
+        runs = [("tnnmg", "tnnmg", arguments.executable)]
+        if arguments.baseline:
+            runs.insert(0, ("tnnmg", "baseline", arguments.baseline))
+        if n <= arguments.pdas_max:
+            runs.append(("pdas", "pdas", arguments.executable))
+        for method, label, executable in runs:
+            rows.append(run(executable, n, method, arguments.directory,
+                            label))
             r = rows[-1]
-            print(f"{n:5d} {method:6s} |J| {r['unknowns']:8d}  wall "
+            print(f"{n:5d} {label:8s} |J| {r['unknowns']:8d}  wall "
                   f"{r['wall_s']:7.2f} s  solve {r['solve_s']:7.2f} s  "
                   f"peak {r['max_rss_gb']:5.2f} GB  {r['status']}  KKT "
                   f"{r['kkt']:.1e}  cn {r['cn']}", flush=True)
     print("load (uptime):", os.getloadavg())
 
-    with open(os.path.join(HERE, "results.csv"), "w", newline="") as file:
-        writer = csv.DictWriter(file, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
+    baseline = [r for r in rows if r["method"] == "baseline"]
+    rows = [r for r in rows if r["method"] != "baseline"]
+    for name, selection in [("results.csv", rows), ("baseline.csv", baseline)]:
+        if not selection:
+            continue
+        with open(os.path.join(HERE, name), "w", newline="") as file:
+            writer = csv.DictWriter(file, fieldnames=list(selection[0].keys()))
+            writer.writeheader()
+            writer.writerows(selection)
     table_and_plot(rows)
+    if baseline:
+        side_by_side(baseline, rows)
+
+
+def side_by_side(baseline, rows):
+    """TNNMG of the baseline build against the new one, mesh by mesh."""
+    print("\n|   n | solve baseline / new | wall baseline / new | finest-level"
+          " iterations baseline / new | cycles per level baseline | cycles"
+          " per level new | cn baseline / new |")
+    print("|---|---|---|---|---|---|---|")
+    for b in baseline:
+        r = next(q for q in rows if q["method"] == "tnnmg" and q["n"] == b["n"])
+        print(f"| {b['n']} | {b['solve_s']:.2f} / {r['solve_s']:.2f} s | "
+              f"{b['wall_s']:.2f} / {r['wall_s']:.2f} s | "
+              f"{b['iterations_per_level'].split()[-1]} / "
+              f"{r['iterations_per_level'].split()[-1]} | "
+              f"{b['cycles_per_level']} | {r['cycles_per_level']} | "
+              f"{b['cn']} / {r['cn']} |")
 
 
 def table_and_plot(rows):

@@ -287,6 +287,14 @@ main()
   check_against_pdas("steel_psi3_f1_32_v_cycle",
                      plate("steel", "psi3", "f1", 32, 32),
                      "  subsection TNNMG\n    set Cycle = V\n  end\n");
+  // Without expansions the crossing step is only projected and searched;
+  // with many, every crossing is held and the correction made again.
+  for (const std::string expansions : {"0", "5"})
+    check_against_pdas("steel_psi3_f1_32_expansions_" + expansions,
+                       plate("steel", "psi3", "f1", 32, 32),
+                       "  subsection TNNMG\n    set Expansions per correction "
+                       "= " +
+                         expansions + "\n  end\n");
   check_against_pdas("lead_psi2_f2_24", plate("lead", "psi2", "f2", 24, 24));
   // Odd counts: 19 -> 10 -> 5 (not nested), 21 x 13 -> 7 x 7 (nested in x
   // by 3, not in y), 45 -> 15 -> 5 (nested by 3).

@@ -5,15 +5,19 @@
  * (1994)), on the problem's hierarchy of meshes (lcp/hierarchy.h). The
  * energy E(u) = 1/2 u^T A u - b^T u never rises. One iteration from a
  * feasible u:
- *   1. nonlinear smoothing: a projected block Gauss-Seidel sweep, each
- *      node's block minimised exactly under its bound (one projection: at
- *      most one unknown of a node is constrained);
+ *   1. nonlinear smoothing: a symmetric projected block Gauss-Seidel sweep
+ *      (forward, then backward), each node's block minimised exactly under
+ *      its bound (one projection: at most one unknown of a node is
+ *      constrained);
  *   2. truncation: the unknowns at their bound are held (mask M);
  *   3. linear correction: d ~ (M A M)^-1 M (b - A u), conjugate gradients
  *      preconditioned by V- or W-cycles ('Cycle') of the truncated multigrid
  *      (lcp/truncated_multigrid.h) until the residual has fallen by
  *      'Correction reduction' (an inexact Newton step on the free set);
- *   4. projection onto the defect obstacle: d_i >= l_i - u_i;
+ *   4. where u + d crosses bounds, those are held too and the correction
+ *      is made again ('Expansions per correction' times); where it still
+ *      crosses, the step is projected onto the defect obstacle,
+ *      d_i >= l_i - u_i;
  *   5. line search: u += alpha d with alpha minimising E on [0, alpha_max],
  *      alpha_max the largest feasible step (a quadratic: one product A d).
  * Nested iteration: from the coarsest level's problem (A_0 = P^T ... A P,
@@ -54,7 +58,7 @@ namespace unilateral::lcp
       double       coarse_tolerance = 1e-6;
       double       reduction        = 1e-1;
       unsigned int cycles           = 20;
-      unsigned int expansions       = 5;
+      unsigned int expansions       = 1;
       unsigned int smoothing_steps  = 1;
       /// "V" or "W".
       std::string cycle = "W";
@@ -86,6 +90,17 @@ namespace unilateral::lcp
                           "At most this many multigrid cycles (conjugate "
                           "gradient steps) per correction.",
                           Integer(1));
+        prm.add_parameter(
+          "Expansions per correction",
+          expansions,
+          "Where the Newton step crosses bounds, those unknowns are held and "
+          "the correction is made again, at most this many times per "
+          "iteration (0: the step is only projected and searched). Each "
+          "expansion holds every unknown the step crosses, more than the "
+          "solution holds near the edge of contact, and only the next "
+          "iterations' smoothing releases them again; one expansion "
+          "overshoots least.",
+          Integer(0));
         prm.add_parameter("Smoothing steps",
                           smoothing_steps,
                           "Block Gauss-Seidel sweeps before and after each "
@@ -194,11 +209,14 @@ namespace unilateral::lcp
     void
     projected_gauss_seidel(const BlockMatrix  &A,
                            const LevelProblem &lcp,
-                           LevelVector        &u)
+                           LevelVector        &u,
+                           const bool          backward)
     {
-      double *x = u.begin();
-      for (Index i = 0; i < A.n_rows(); ++i)
+      double     *x = u.begin();
+      const Index n = A.n_rows();
+      for (Index k = 0; k < n; ++k)
         {
+          const Index      i         = backward ? n - 1 - k : k;
           const NodeVector r         = A.row_residual(i, lcp.b.begin(), x);
           const Block     &D_inverse = lcp.inverses[i];
           NodeVector       y         = Eigen::Map<const NodeVector>(x + B * i);
@@ -345,9 +363,14 @@ namespace unilateral::lcp
           // A start carried up from the coarser level is first corrected
           // as it is: its slopes, interpolated, do not fit the values put
           // on the bounds, and a sweep would release much of what it
-          // should hold.
+          // should hold. The sweep is symmetric, as the linear smoother:
+          // one direction releases the nodes held too far mainly on the
+          // side it comes from.
           if (outcome.iterations > 1 || !carried)
-            projected_gauss_seidel(A, lcp, u);
+            {
+              projected_gauss_seidel(A, lcp, u, false);
+              projected_gauss_seidel(A, lcp, u, true);
+            }
           const double energy = residual_and_energy(A, lcp, u, r);
           // Held: at the bound, or no unknown at all.
           outcome.held = 0;
@@ -369,12 +392,15 @@ namespace unilateral::lcp
           outcome.cycles += mg.solve(d, r, options.reduction, options.cycles);
           outcome.products += 2;
 
-          // The Newton step; where it crosses bounds, those are held too
-          // and the step is taken again, until it crosses none.
+          // The Newton step; where it crosses bounds, those are held (and
+          // put on them) and the step is taken again, until it crosses
+          // none or the expansions allowed are spent.
           v = u;
           v += d;
+          const bool   crossed    = hold_penetrating(lcp, v, truncated) > 0;
           unsigned int expansions = 0;
-          while (hold_penetrating(lcp, v, truncated) > 0)
+          bool         crossing   = crossed;
+          while (crossing && expansions < options.expansions)
             {
               ++expansions;
               mg.truncate(level, truncated);
@@ -384,17 +410,12 @@ namespace unilateral::lcp
                 mg.solve(dv, rv, options.reduction, options.cycles);
               v += dv;
               ++outcome.products;
-              if (expansions == options.expansions)
-                {
-                  for (std::size_t i = 0; i < n; ++i)
-                    v[i] = std::max(v[i], lcp.lower[i]);
-                  break;
-                }
+              crossing = hold_penetrating(lcp, v, truncated) > 0;
             }
           // Taken if the energy did not rise; else the line search.
           step = v;
           step -= u;
-          if (expansions > 0 && residual_and_energy(A, lcp, v, rv) > energy)
+          if (crossed && residual_and_energy(A, lcp, v, rv) > energy)
             {
               step = u;
               line_search(A, lcp, r, d, step);
@@ -409,7 +430,7 @@ namespace unilateral::lcp
           // Done when the held set stays, the Newton step crosses no
           // bound, and it is below the tolerance or no longer falls (the
           // rounding floor of A u): that step lowered the energy.
-          if (same_set && expansions == 0 &&
+          if (same_set && !crossed &&
               (relative <= tolerance || relative > 0.5 * last_step))
             {
               outcome.converged = true;
