@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 #include <ostream>
+#include <sstream>
 #include <streambuf>
 #include <string>
 #include <utility>
@@ -99,6 +100,84 @@ namespace unilateral::lcp
         result.A.coeffRef(j, j) += eps;
       return result;
     }
+
+    /**
+     * The proximal point method (Rockafellar 1976) from @p solution: x_k+1
+     * solves LCP(A + eps I, b + eps x_k), the energy plus eps/2 |x - x_k|^2,
+     * a strictly convex problem for every k, warm-started from x_k. A fixed
+     * point solves LCP(A, b), and the iterates converge to a solution even
+     * where A is only semidefinite on the solution's free set and the
+     * solutions form an unbounded set (a course of bricks free to slide
+     * along its frictionless joints): the iteration keeps x_k's position
+     * along such a motion and corrects the rest by about eps / (lambda +
+     * eps) per step, lambda A's smallest nonzero eigenvalue there. Where
+     * that is slow (a block held by contacts that carry almost no force:
+     * lambda tiny), eps falls tenfold per step, down to @p smallest_eps:
+     * each step starts nearer the answer, so a smaller eps is usually safe;
+     * where the method fails on a step, eps goes back up tenfold and stays
+     * there, and the step is taken again from the same iterate. Stops
+     * once the KKT residual on A is below @p tolerance, or when three steps
+     * together did not halve it (slower steps would not reach it within
+     * the iterations a solve may take).
+     */
+    Report
+    proximal_point(const Problem          &problem,
+                   const SolverParameters &parameters,
+                   const double            first_eps,
+                   const double            smallest_eps,
+                   const double            tolerance,
+                   Solution               &solution,
+                   std::ostream           *progress)
+    {
+      Problem    proximal = shifted(problem, first_eps);
+      double     eps      = first_eps;
+      double     floor    = smallest_eps;
+      const auto set_eps  = [&](const double new_eps) {
+        for (Index j = 0; j < proximal.size(); ++j)
+          proximal.A.coeffRef(j, j) += new_eps - eps;
+        eps = new_eps;
+      };
+      Report              result;
+      std::vector<double> residuals{kkt_residuals(problem, solution.u).max()};
+      for (unsigned int k = 1;
+           residuals.size() < 4 ||
+           residuals.back() < 0.5 * residuals[residuals.size() - 4];
+           ++k)
+        {
+          proximal.b        = problem.b + eps * solution.u;
+          Solution     next = solution;
+          const Report step =
+            run_projection_method(proximal, parameters, next, nullptr);
+          result.iterations += step.iterations;
+          result.counters += step.counters;
+          if (!step.converged())
+            {
+              if (eps >= first_eps || floor > smallest_eps)
+                return step;
+              floor = std::min(10 * eps, first_eps);
+              set_eps(floor);
+              continue;
+            }
+          solution              = std::move(next);
+          const double residual = kkt_residuals(problem, solution.u).max();
+          if (progress != nullptr)
+            *progress << "    projection: proximal step " << k
+                      << " (eps = " << eps << "): " << step.iterations
+                      << " iterations, KKT residual " << residual << std::endl;
+          if (residual <= tolerance)
+            return result;
+          if (residual > 0.1 * residuals.back() && eps > floor)
+            set_eps(std::max(0.1 * eps, floor));
+          residuals.push_back(residual);
+        }
+      std::ostringstream message;
+      message << "the proximal point iteration stalled at a KKT residual of "
+              << residuals.back() << " after " << result.iterations
+              << " iterations";
+      result.status  = Status::iteration_limit;
+      result.message = message.str();
+      return result;
+    }
   } // namespace
 
   void
@@ -132,7 +211,8 @@ namespace unilateral::lcp
       start.active_set.clear(); // the test on u_eps decides, not a hint
     else if (first_active_set == FirstActiveSet::interior_point)
       start.active_set = interior_point_active_set(problem, solution.u);
-    Report projection;
+    const Solution approximate = start;
+    Report         projection;
     for (;;)
       {
         const bool stage_left = eps_k * 1e-3 >= last_eps;
@@ -170,6 +250,31 @@ namespace unilateral::lcp
             projection = stage;
             break;
           }
+      }
+    // Where the projection onto A fails, A is singular on the answer's
+    // free set or PDAS does not settle on it: finish by the proximal point
+    // method instead, with the eps the approximate answer was computed
+    // with, so that its first problem lies next to that answer.
+    if (!projection.converged())
+      {
+        Solution     finish   = approximate;
+        const Report proximal = proximal_point(problem,
+                                               parameters,
+                                               first_eps,
+                                               last_eps,
+                                               parameters.kkt_tolerance,
+                                               finish,
+                                               progress);
+        report.projection_iterations += proximal.iterations;
+        report.counters += proximal.counters;
+        if (proximal.converged())
+          {
+            projection = proximal;
+            solution   = std::move(finish);
+          }
+        else
+          projection.message +=
+            "; the proximal point finish: " + proximal.message;
       }
     report.projected = true;
     if (!projection.converged())

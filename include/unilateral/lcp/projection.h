@@ -24,6 +24,13 @@ namespace unilateral::lcp
    * stage. A projection that has not settled in 50 iterations counts as
    * wandering while a stage is left.
    *
+   * Where even that fails, because A is singular on the answer's free set
+   * (the solutions form an unbounded set: a course of bricks free to slide
+   * along frictionless joints, which no load drives) or the method cycles
+   * on A, the approximate answer is finished by the proximal point method
+   * instead: LCP(A + eps I, b + eps x_k) for k = 0, 1, ..., each strictly
+   * convex, whose fixed point solves LCP(A, b).
+   *
    * @p solution: on entry the approximate answer (and the factor it
    * leaves), on exit the projected one. @p first_eps: the absolute eps the
    * continuation starts below (that of the regularised solve).
