@@ -119,6 +119,15 @@ namespace unilateral::lcp
      * once the KKT residual on A is below @p tolerance, or when three steps
      * together did not halve it (slower steps would not reach it within
      * the iterations a solve may take).
+     *
+     * Where the LCP has no solution (a load that drives a body away), each
+     * step moves x by about as much as the one before along that motion,
+     * and the KKT residual relative to the growing x falls as if
+     * converging. Where a solution exists, the steps shrink towards it
+     * (their lengths never grow for a fixed eps). So an answer is taken
+     * only after a step at most half as long as the one before, and an
+     * iterate that has moved from the start by more than the start's own
+     * size ends the method as failed.
      */
     Report
     proximal_point(const Problem          &problem,
@@ -138,6 +147,8 @@ namespace unilateral::lcp
         eps = new_eps;
       };
       Report              result;
+      const Vector        start         = solution.u;
+      double              previous_step = 0;
       std::vector<double> residuals{kkt_residuals(problem, solution.u).max()};
       for (unsigned int k = 1;
            residuals.size() < 4 ||
@@ -158,22 +169,43 @@ namespace unilateral::lcp
               set_eps(floor);
               continue;
             }
-          solution              = std::move(next);
+          const double step_length =
+            (next.u - solution.u).lpNorm<Eigen::Infinity>();
+          solution           = std::move(next);
+          const double moved = (solution.u - start).lpNorm<Eigen::Infinity>();
+          if (moved > start.lpNorm<Eigen::Infinity>())
+            {
+              std::ostringstream message;
+              message << "the proximal point iteration moved the answer by "
+                      << moved << ", more than its own size (no solution: "
+                      << "a load that drives a body away?)";
+              result.status  = Status::iteration_limit;
+              result.message = message.str();
+              return result;
+            }
           const double residual = kkt_residuals(problem, solution.u).max();
           if (progress != nullptr)
             *progress << "    projection: proximal step " << k
                       << " (eps = " << eps << "): " << step.iterations
                       << " iterations, KKT residual " << residual << std::endl;
-          if (residual <= tolerance)
+          if (residual <= tolerance && step_length <= 0.5 * previous_step)
             return result;
+          previous_step = step_length;
           if (residual > 0.1 * residuals.back() && eps > floor)
             set_eps(std::max(0.1 * eps, floor));
           residuals.push_back(residual);
         }
       std::ostringstream message;
-      message << "the proximal point iteration stalled at a KKT residual of "
-              << residuals.back() << " after " << result.iterations
-              << " iterations";
+      if (residuals.back() <= tolerance)
+        message << "the proximal point steps do not shrink (the last moved "
+                   "the answer by "
+                << previous_step
+                << "): no solution, a load that drives a body away?";
+      else
+        message << "the proximal point iteration stalled at a KKT residual "
+                   "of "
+                << residuals.back() << " after " << result.iterations
+                << " iterations";
       result.status  = Status::iteration_limit;
       result.message = message.str();
       return result;
@@ -255,6 +287,7 @@ namespace unilateral::lcp
     // free set or PDAS does not settle on it: finish by the proximal point
     // method instead, with the eps the approximate answer was computed
     // with, so that its first problem lies next to that answer.
+    std::string proximal_failure;
     if (!projection.converged())
       {
         Solution     finish   = approximate;
@@ -273,8 +306,7 @@ namespace unilateral::lcp
             solution   = std::move(finish);
           }
         else
-          projection.message +=
-            "; the proximal point finish: " + proximal.message;
+          proximal_failure = "; the proximal point finish: " + proximal.message;
       }
     report.projected = true;
     if (!projection.converged())
@@ -286,6 +318,7 @@ namespace unilateral::lcp
             ": without regularisation this LCP has no unique solution for "
             "that active set (check that every body can be supported), or "
             "set 'Solver/Projection = false' to keep the regularised one";
+        report.message += proximal_failure;
       }
   }
 } // namespace unilateral::lcp
