@@ -29,12 +29,12 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def write_prm(path, n, method, directory):
+def write_prm(path, n, method, directory, run_name=None):
     with open(path, "w") as prm:
         prm.write(f"""set Scene = plate
 subsection Output
   set Directory     = {directory}
-  set Run name      = {method}_{n}
+  set Run name      = {run_name or f"{method}_{n}"}
   set Write VTU     = false
   set Print timings = false
   set Progress      = true
@@ -63,13 +63,7 @@ end
 def run(executable, n, method, directory, label=None):
     label = label or method
     prm = os.path.join(directory, f"{label}_{n}.prm")
-    write_prm(prm, n, method, directory)
-    if label != method:
-        with open(prm) as file:
-            text = file.read().replace(f"Run name      = {method}_{n}",
-                                       f"Run name      = {label}_{n}")
-        with open(prm, "w") as file:
-            file.write(text)
+    write_prm(prm, n, method, directory, f"{label}_{n}")
     start = time.time()
     process = subprocess.run(["/usr/bin/time", "-v", executable, prm],
                              capture_output=True, text=True)

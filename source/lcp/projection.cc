@@ -91,13 +91,20 @@ namespace unilateral::lcp
       return report;
     }
 
+    // A += delta I.
+    void
+    shift_diagonal(Problem &problem, const double delta)
+    {
+      for (Index j = 0; j < problem.size(); ++j)
+        problem.A.coeffRef(j, j) += delta;
+    }
+
     // A + eps I.
     Problem
     shifted(const Problem &problem, const double eps)
     {
       Problem result = problem;
-      for (Index j = 0; j < result.size(); ++j)
-        result.A.coeffRef(j, j) += eps;
+      shift_diagonal(result, eps);
       return result;
     }
 
@@ -142,8 +149,7 @@ namespace unilateral::lcp
       double     eps      = first_eps;
       double     floor    = smallest_eps;
       const auto set_eps  = [&](const double new_eps) {
-        for (Index j = 0; j < proximal.size(); ++j)
-          proximal.A.coeffRef(j, j) += new_eps - eps;
+        shift_diagonal(proximal, new_eps - eps);
         eps = new_eps;
       };
       Report              result;
