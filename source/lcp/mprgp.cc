@@ -123,10 +123,49 @@ namespace unilateral::lcp
     x -= alpha_f * p;
     g -= alpha_f * Hp;
     moved(alpha_f);
-    x -= alpha_bar * free_gradient(x);
+    expand(x);
+    return true;
+  }
+
+  // The projected step along the free gradient phi of an expansion. Its
+  // fixed length alpha_bar lowers the energy for any alpha_bar <= 2 / ||H||
+  // (Dostal & Schoberl), but where H's spectrum is wide (the penalised dual
+  // of TFETI, ||H|| = rho) that is far shorter than the step the energy
+  // wants along phi. The adaptive length is that step, phi^T phi / phi^T H
+  // phi (one product more), kept only where the projected iterate's energy
+  // is below the boundary point's, else the fixed step follows: the energy
+  // still never rises.
+  void
+  Mprgp::expand(Vector &x)
+  {
+    const Vector phi = free_gradient(x);
+    if (adaptive_expansion)
+      {
+        const double energy_before = energy(x);
+        const Vector Hphi          = product(phi);
+        const double curvature     = phi.dot(Hphi);
+        if (curvature > 0)
+          {
+            Vector trial = x - (phi.squaredNorm() / curvature) * phi;
+            project(trial);
+            restart(trial);
+            if (energy(trial) < energy_before)
+              {
+                x = std::move(trial);
+                ++n_adaptive_expansions;
+                return;
+              }
+          }
+      }
+    x -= alpha_bar * phi;
     project(x);
     restart(x);
-    return true;
+  }
+
+  double
+  Mprgp::energy(const Vector &x) const
+  {
+    return 0.5 * x.dot(g - r);
   }
 
   // Proportioning: along the chopped gradient @p beta, releasing constraints

@@ -12,13 +12,14 @@
 // contacts whose multipliers are positive) makes it exact: in one or two
 // iterations where TFETI's active set is right, so that is checked too (a
 // wrong dual still ends exact, after many more).
-// Long blocks are cut into pieces glued by equalities ('Tearing/Largest
-// aspect ratio', default 2: the laminae above are cut): the laminae with
-// their blocks whole and cut give PDAS's answer, with the subdomains and
-// multipliers counted; and a U-shaped block whose upper slice falls in two
-// parts (the slice must be split, or a part would float with the rigid
-// motions of the whole slice). A 3D wall free to slide along z, unloaded
-// that way: TFETI refuses it with a message that says what to do.
+// MPRGP's adaptive expansion step ('TFETI/Expansion step') on running bond
+// and laminae, the same checks. Long blocks are cut into pieces glued by
+// equalities ('Tearing/Largest aspect ratio', default 2: the laminae above are
+// cut): the laminae with their blocks whole and cut give PDAS's answer, with
+// the subdomains and multipliers counted; and a U-shaped block whose upper
+// slice falls in two parts (the slice must be split, or a part would float with
+// the rigid motions of the whole slice). A 3D wall free to slide along z,
+// unloaded that way: TFETI refuses it with a message that says what to do.
 #include "tfeti_test_tools.h"
 
 #include <fstream>
@@ -110,6 +111,23 @@ main()
                "running bond",
                10,
                "    set Relative gap = 0\n");
+
+  // MPRGP's adaptive expansion step: the same answers, and the adaptive
+  // length taken.
+  for (const std::string geometry : {"running bond", "laminae"})
+    {
+      const Run result =
+        against_pdas(geometry + ", m = 10, 'Expansion step' = adaptive",
+                     geometry,
+                     10,
+                     "",
+                     "tfeti",
+                     "subsection Solver\n  subsection TFETI\n    set "
+                     "Expansion step = adaptive\n  end\nend\n");
+      std::cout << "  adaptive expansions taken: "
+                << yes_no(figure(result.report, "adaptive_expansions") > 0)
+                << "\n";
+    }
 
   for (const std::string ratio : {"0", "2"})
     {

@@ -27,7 +27,9 @@ namespace unilateral::lcp
    *     alpha_cg = g^T p / p^T H p, alpha_f = the largest feasible step;
    *     a CG step (alpha_cg <= alpha_f): x -= alpha_cg p, p = phi - gamma p
    *     with gamma = phi^T H p / p^T H p; else an expansion: x -= alpha_f p,
-   *     then x = P(x - alpha_bar phi(x)), p = phi(x);
+   *     then x = P(x - alpha_bar phi(x)), p = phi(x) (or, adaptive, the
+   *     step phi^T phi / phi^T H phi instead of alpha_bar where the
+   *     projected iterate's energy is below the boundary point's);
    *   - else proportioning: x -= (g^T beta / beta^T H beta) beta,
    *     p = phi(x).
    * alpha_bar in (0, 2 / ||H||]; Gamma = 1 as Dostal recommends.
@@ -66,6 +68,15 @@ namespace unilateral::lcp
       this->observer = std::move(observer);
     }
 
+    /// Expansion steps of the length the energy wants along the free
+    /// gradient instead of alpha_bar, where the projected iterate's energy
+    /// is below the boundary point's (expand() in the source says why).
+    void
+    use_adaptive_expansion(const bool adaptive)
+    {
+      adaptive_expansion = adaptive;
+    }
+
     /**
      * From @p x (projected onto the feasible set first) until @p stop holds
      * or @p max_steps steps. On return x is the iterate, gradient() its
@@ -94,6 +105,13 @@ namespace unilateral::lcp
     products() const
     {
       return n_products;
+    }
+
+    /// Expansions that took the adaptive length.
+    unsigned int
+    adaptive_expansions() const
+    {
+      return n_adaptive_expansions;
     }
 
   private:
@@ -125,6 +143,14 @@ namespace unilateral::lcp
     bool
     proportioning(Vector &x, const Vector &beta);
 
+    /// The projected free-gradient step that ends an expansion.
+    void
+    expand(Vector &x);
+
+    /// 1/2 x^T H x - r^T x, from g = H x - r.
+    double
+    energy(const Vector &x) const;
+
     /// x -= alpha d for the last product's input d (moved), or x = d.
     void
     moved(double alpha) const;
@@ -133,7 +159,8 @@ namespace unilateral::lcp
     Observer     observer;
     Vector       r, lower;
     double       alpha_bar, gamma;
+    bool         adaptive_expansion = false;
     Vector       g, p;
-    unsigned int n_steps = 0, n_products = 0;
+    unsigned int n_steps = 0, n_products = 0, n_adaptive_expansions = 0;
   };
 } // namespace unilateral::lcp

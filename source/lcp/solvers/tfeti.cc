@@ -65,8 +65,10 @@ namespace unilateral::lcp
       /// eta / ||P (d - F l0)||: the coarsest inner precision.
       double eta = 0.1;
       /// alpha_bar ||H|| of MPRGP's expansion steps.
-      double       step_length = 1.9;
-      unsigned int max_outer   = 200;
+      double step_length = 1.9;
+      /// "fixed" or "adaptive".
+      std::string  expansion = "fixed";
+      unsigned int max_outer = 200;
 
       void
       add_parameters(dealii::ParameterHandler &prm) override;
@@ -131,6 +133,15 @@ namespace unilateral::lcp
                         "alpha_bar ||H|| of MPRGP's expansion steps, in "
                         "(0, 2]; ||H|| = max(||P F P||, rho).",
                         Double(0, 2));
+      prm.add_parameter(
+        "Expansion step",
+        expansion,
+        "The length of MPRGP's projected step along the free gradient after "
+        "it reaches the boundary: 'fixed', alpha_bar = 'Step length' / ||H||; "
+        "'adaptive', the step that minimises the energy along that gradient "
+        "(one product more), taken where the projected iterate's energy is "
+        "below the boundary point's, else the fixed one.",
+        Selection("fixed|adaptive"));
       prm.add_parameter("Maximum outer iterations",
                         max_outer,
                         "SMALBE's iterations (updates of the equality "
@@ -223,7 +234,7 @@ namespace unilateral::lcp
       /// m, and the gradient of the last inner functional at it.
       Vector       m;
       Vector       gradient;
-      unsigned int outer = 0, inner = 0;
+      unsigned int outer = 0, inner = 0, adaptive_expansions = 0;
 
     private:
       /// ||P F P|| ||Q m|| and ||g^P||, relative to the scale.
@@ -262,6 +273,7 @@ namespace unilateral::lcp
             problem.lower,
             options.step_length / std::max(norm_pfp, rho),
             1.0);
+          mprgp.use_adaptive_expansion(options.expansion == "adaptive");
           // G m and (G G^T)^-1 G m follow m from the products' own.
           mprgp.observe([&](const double alpha) {
             if (std::isnan(alpha))
@@ -289,6 +301,7 @@ namespace unilateral::lcp
             mprgp.solve(m, stop, used < max_products ? max_products - used : 0);
           gradient = mprgp.gradient();
           inner += mprgp.steps();
+          adaptive_expansions += mprgp.adaptive_expansions();
           if (outcome == Mprgp::Outcome::not_definite ||
               outcome == Mprgp::Outcome::diverged)
             return Outcome::broke_down;
@@ -416,6 +429,8 @@ namespace unilateral::lcp
       dual.add_work(report);
       report.set_figure("outer_iterations", smalbe.outer);
       report.set_figure("inner_iterations", smalbe.inner);
+      if (options.expansion == "adaptive")
+        report.set_figure("adaptive_expansions", smalbe.adaptive_expansions);
       switch (outcome)
         {
           case Smalbe::Outcome::converged:
