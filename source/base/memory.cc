@@ -1,6 +1,9 @@
 #include <unilateral/base/memory.h>
 
 #include <unistd.h>
+#if defined(__GLIBC__)
+#  include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <cstdio>
@@ -63,6 +66,14 @@ namespace unilateral::memory
     limit = bytes;
   }
 
+  void
+  release_free_heap()
+  {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+  }
+
   double
   available()
   {
@@ -81,7 +92,13 @@ namespace unilateral::memory
   void
   require(const double bytes, const std::string &what)
   {
-    const double left = available();
+    double left = available();
+    // Trimmed only where it matters (release_free_heap() says why).
+    if (bytes > left)
+      {
+        release_free_heap();
+        left = available();
+      }
     if (bytes <= left)
       return;
     std::ostringstream message;

@@ -249,6 +249,14 @@ namespace unilateral::lcp
       start.active_set.clear(); // the test on u_eps decides, not a hint
     else if (first_active_set == FirstActiveSet::interior_point)
       start.active_set = interior_point_active_set(problem, solution.u);
+    // The approximate answer's factor goes to the first run on A only (its
+    // systems are solved with it as a nearby factor); the copies kept for a
+    // continuation stage or the proximal finish go without, so that it is
+    // freed once the projection factorises its own: the largest walls
+    // cannot hold two factors (benchmarks/tfeti/README.md, "The largest
+    // walls").
+    std::shared_ptr<const ActiveSetFactor> nearby = std::move(start.factor);
+    solution.factor.reset();
     const Solution approximate = start;
     Report         projection;
     for (;;)
@@ -260,7 +268,9 @@ namespace unilateral::lcp
           parameters.max_iterations > 0 ?
                         std::min(parameters.max_iterations, 50u) :
                         50u;
-        solution   = start;
+        solution = start;
+        if (nearby != nullptr)
+          solution.factor = std::move(nearby);
         projection = run_projection_method(problem,
                                            projection_parameters,
                                            solution,

@@ -32,7 +32,8 @@ namespace unilateral
      * What the run can still allocate, in bytes: the machine's available
      * memory (MemAvailable in /proc/meminfo, which counts reclaimable page
      * cache as free), or the limit less the run's resident memory if that
-     * is smaller. Infinite where neither can be read.
+     * is smaller. Infinite where neither can be read. The run's freed heap
+     * memory counts as used until release_free_heap().
      */
     double
     available();
@@ -43,10 +44,25 @@ namespace unilateral
     limit_binds();
 
     /**
-     * Throw OutOfMemory naming @p what unless @p bytes more fit.
+     * Throw OutOfMemory naming @p what unless @p bytes more fit, after
+     * release_free_heap() if they did not at first.
      */
     void
     require(double bytes, const std::string &what);
+
+    /**
+     * Return the heap memory the run has freed to the system (glibc's
+     * malloc_trim). SuperLU_DIST, which PETSc loads for deal.II, switches
+     * off glibc's own trimming and its mmap of large blocks as it is
+     * loaded, so without this everything a run frees stays resident:
+     * factors of earlier active sets, copies of A_FF, the assembly's
+     * temporaries. Called where memory runs short only: the pages given
+     * back are faulted in and zeroed again by the next allocations, which
+     * costs more than keeping them (benchmarks/tfeti/README.md, "The
+     * largest walls").
+     */
+    void
+    release_free_heap();
 
     /// The process's peak resident memory so far (VmHWM), in bytes; 0 if
     /// the kernel does not say.

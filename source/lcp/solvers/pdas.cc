@@ -448,7 +448,11 @@ namespace unilateral::lcp
         , stop_as_cycling(safeguards_on && parameters.max_iterations == 0)
         , report(report)
         , u(solution.u)
-        , system(problem.A, report.counters, solution.factor)
+        // The system owns the given factor while it runs (solution.factor
+        // is set again at the end), so that the factor is freed as soon as
+        // the system factorises its own: two factors at once would set the
+        // peak memory of the largest problems.
+        , system(problem.A, report.counters, std::move(solution.factor))
         // Ties go to the active side: before the first test every index
         // counts as active, so an index at its bound with a zero multiplier
         // (up to round-off) stays there. An active degenerate contact costs
@@ -776,7 +780,6 @@ namespace unilateral::lcp
               break;
             }
           report.iterations = iteration + 1;
-          solution.factor   = pdas.factor();
           if (progress != nullptr)
             {
               *progress << "    pdas iteration " << iteration + 1
@@ -792,6 +795,7 @@ namespace unilateral::lcp
               *progress << std::endl;
             }
         }
+      solution.factor = pdas.factor();
     }
   } // namespace
 
