@@ -90,11 +90,11 @@ namespace unilateral::memory
   }
 
   void
-  require(const double bytes, const std::string &what)
+  require(const double bytes, const std::string &what, const bool after_freeing)
   {
     double left = available();
     // Trimmed only where it matters (release_free_heap() says why).
-    if (bytes > left)
+    if (bytes > left && after_freeing)
       {
         release_free_heap();
         left = available();

@@ -120,7 +120,8 @@ namespace unilateral::lcp
     {
       memory::require(sizeof(Index) * (2.4 * A.nonZeros() + 10.0 * A.rows()),
                       "the fill-reducing ordering of a system with " +
-                        std::to_string(A.rows()) + " unknowns");
+                        std::to_string(A.rows()) + " unknowns",
+                      true);
     }
 
     /// A failed CHOLMOD call of @p step on a system with @p n unknowns:
@@ -316,7 +317,8 @@ namespace unilateral::lcp
       {
         memory::require(factor_bytes,
                         "the Cholesky factor of a system with " +
-                          std::to_string(A.rows()) + " unknowns");
+                          std::to_string(A.rows()) + " unknowns",
+                        true);
       }
     catch (const OutOfMemory &)
       {

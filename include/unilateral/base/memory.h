@@ -44,11 +44,15 @@ namespace unilateral
     limit_binds();
 
     /**
-     * Throw OutOfMemory naming @p what unless @p bytes more fit, after
-     * release_free_heap() if they did not at first.
+     * Throw OutOfMemory naming @p what unless @p bytes more fit. With
+     * @p after_freeing, for an estimate that is the whole allocation (a
+     * factor, the ordering's workspace), after release_free_heap() if
+     * they did not fit at first. Not for an estimate that leaves out
+     * smaller temporaries (the assembly's): there the freed heap is the
+     * margin they are taken from.
      */
     void
-    require(double bytes, const std::string &what);
+    require(double bytes, const std::string &what, bool after_freeing = false);
 
     /**
      * Return the heap memory the run has freed to the system (glibc's

@@ -77,12 +77,15 @@ namespace unilateral::masonry
       double most_entries = 0;
       for (std::size_t c = 0; c < n_cells; ++c)
         most_entries += std::pow(cell_start[c + 1] - cell_start[c], 2.0);
-      memory::require(std::min(most_entries, double(n) * n) *
-                        (2 * sizeof(lcp::Index) + 8),
+      const double entries_bound = std::min(most_entries, double(n) * n);
+      memory::require(entries_bound * (2 * sizeof(lcp::Index) + 8),
                       "the matrix A~ of " + std::to_string(n) + " unknowns");
       std::vector<lcp::Index> outer(n + 1, 0);
+      // Room for the bound at once: a vector that grows by doubling holds
+      // its old and its new buffer at the moment it grows, up to three
+      // times the pattern, more than the check above allowed.
       std::vector<lcp::Index> inner;
-      inner.reserve(cell_variables.size() * 16);
+      inner.reserve(static_cast<std::size_t>(entries_bound));
       std::vector<int> marker(n, -1);
       for (int j = 0; j < n; ++j)
         {
