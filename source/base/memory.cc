@@ -89,18 +89,24 @@ namespace unilateral::memory
     return limit > 0 && limit - resident() < machine_available();
   }
 
+  bool
+  fits(const double bytes, const bool after_freeing)
+  {
+    if (bytes <= available())
+      return true;
+    // Trimmed only where it matters (release_free_heap() says why).
+    if (!after_freeing)
+      return false;
+    release_free_heap();
+    return bytes <= available();
+  }
+
   void
   require(const double bytes, const std::string &what, const bool after_freeing)
   {
-    double left = available();
-    // Trimmed only where it matters (release_free_heap() says why).
-    if (bytes > left && after_freeing)
-      {
-        release_free_heap();
-        left = available();
-      }
-    if (bytes <= left)
+    if (fits(bytes, after_freeing))
       return;
+    const double       left = available();
     std::ostringstream message;
     message << what << " needs " << format(bytes) << " more memory, but only "
             << format(left) << " is left"

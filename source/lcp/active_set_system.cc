@@ -254,10 +254,7 @@ namespace unilateral::lcp
     // Values and row indices, the simplicial copy's room to grow, and the
     // supernodal copy it is converted from: about 24 bytes per entry.
     const double copy_bytes = 24 * own->cholesky.factor_nonzeros();
-    if (copy_bytes < 0.5 * memory::available())
-      return true;
-    memory::release_free_heap();
-    return copy_bytes < 0.5 * memory::available();
+    return memory::fits(2 * copy_bytes, true);
   }
 
   bool

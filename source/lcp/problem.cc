@@ -7,9 +7,31 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace unilateral::lcp
 {
+  Problem::Problem(Problem &&other) noexcept
+  {
+    *this = std::move(other);
+  }
+
+  Problem &
+  Problem::operator=(Problem &&other) noexcept
+  {
+    A.swap(other.A);
+    SparseMatrix().swap(other.A); // our former A goes with the temporary
+    b                  = std::move(other.b);
+    constrained        = std::move(other.constrained);
+    lower_bound        = std::move(other.lower_bound);
+    floating_bodies    = other.floating_bodies;
+    mostly_active      = other.mostly_active;
+    known_semidefinite = other.known_semidefinite;
+    tearing            = std::move(other.tearing);
+    hierarchy          = std::move(other.hierarchy);
+    return *this;
+  }
+
   std::vector<char>
   Problem::constrained_mask() const
   {

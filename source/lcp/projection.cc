@@ -256,9 +256,8 @@ namespace unilateral::lcp
     // cannot hold two factors (benchmarks/tfeti/README.md, "The largest
     // walls").
     std::shared_ptr<const ActiveSetFactor> nearby = std::move(start.factor);
-    solution.factor.reset();
-    const Solution approximate = start;
-    Report         projection;
+    const Solution                         approximate = start;
+    Report                                 projection;
     for (;;)
       {
         const bool stage_left = eps_k * 1e-3 >= last_eps;

@@ -44,12 +44,18 @@ namespace unilateral
     limit_binds();
 
     /**
-     * Throw OutOfMemory naming @p what unless @p bytes more fit. With
-     * @p after_freeing, for an estimate that is the whole allocation (a
-     * factor, the ordering's workspace), after release_free_heap() if
-     * they did not fit at first. Not for an estimate that leaves out
-     * smaller temporaries (the assembly's): there the freed heap is the
-     * margin they are taken from.
+     * Whether @p bytes more fit. With @p after_freeing, for an estimate
+     * that is the whole allocation (a factor, the ordering's workspace, a
+     * copy of a factor), after release_free_heap() if they did not fit at
+     * first. Not for an estimate that leaves out smaller temporaries (the
+     * assembly's): there the freed heap is the margin they are taken from.
+     */
+    bool
+    fits(double bytes, bool after_freeing);
+
+    /**
+     * Throw OutOfMemory naming @p what unless fits(@p bytes,
+     * @p after_freeing).
      */
     void
     require(double bytes, const std::string &what, bool after_freeing = false);

@@ -38,6 +38,23 @@ namespace unilateral::lcp
 
   struct Problem
   {
+    Problem()                = default;
+    Problem(const Problem &) = default;
+    Problem &
+    operator=(const Problem &) = default;
+
+    /**
+     * Moves hand A over by swapping it. Eigen 3.4's SparseMatrix has no
+     * move operations, so the defaults would copy A, the largest object of
+     * a run, and hold it twice (a masonry wall of m = 1000 was killed by
+     * the kernel storing its assembled problem). A member added below must
+     * be added to the move assignment too (problem.cc).
+     */
+    Problem(Problem &&other) noexcept;
+
+    Problem &
+    operator=(Problem &&other) noexcept;
+
     /// Symmetric positive semidefinite, both triangles stored, compressed,
     /// every diagonal entry present in the pattern (possibly zero).
     SparseMatrix A;

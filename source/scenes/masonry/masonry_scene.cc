@@ -253,18 +253,11 @@ namespace unilateral::masonry
   MasonryScene<dim>::assemble_system(RunContext &context)
   {
     context.stage(registered_name, "assembling A~ and b~ in the gap variables");
-    lcp::Problem assembled = assemble_lcp<dim>(state->discretisation,
-                                               *state->change,
-                                               state->contacts,
-                                               state->loads,
-                                               energy_offset);
-    // Eigen 3.4's SparseMatrix has no move assignment: assigning the
-    // Problem would copy A and hold the matrix twice (the run of a stack
-    // bond of m = 1000 was killed by the kernel there). A is swapped in.
-    lcp::SparseMatrix A;
-    A.swap(assembled.A);
-    lcp_problem = std::move(assembled);
-    lcp_problem.A.swap(A);
+    lcp_problem = assemble_lcp<dim>(state->discretisation,
+                                    *state->change,
+                                    state->contacts,
+                                    state->loads,
+                                    energy_offset);
     // Blocks are free to move unless contacts hold them, and a wall is in
     // contact almost everywhere: the solvers' automatic settings for both.
     // A~ = C~^-T A C~^-1 is a congruence of the semidefinite stiffness.
