@@ -78,6 +78,8 @@ namespace unilateral::lcp
         (this->inherited->fixed.size() != std::size_t(A.rows()) ||
          !this->inherited->cholesky.has_factor()))
       this->inherited.reset();
+    if (this->inherited && !this->inherited->reduced_index.empty())
+      reduced_factor_flops = this->inherited->cholesky.factorisation_flops();
   }
 
   std::shared_ptr<const ActiveSetFactor>
@@ -158,6 +160,7 @@ namespace unilateral::lcp
     for (const char f : fixed)
       n_fixed += f;
 
+    const bool settling = active_set_settling(fixed);
     own->fixed          = fixed;
     own->fixed_diagonal = fixed_diagonal;
     inherited.reset(); // our own factor is closer from now on
@@ -165,7 +168,8 @@ namespace unilateral::lcp
     // A distributed factorisation always takes the full pattern: its
     // symbolic analysis (a parallel ordering over all ranks) is then run
     // once for every active set.
-    if (n_fixed <= reduced_threshold * n || own->cholesky.distributed())
+    if (n_fixed <= reduced_threshold * n || settling ||
+        own->cholesky.distributed())
       {
         // The full pattern: zero the coupling of fixed indices, keep a
         // scaled identity on their diagonal (the conditioning of A).
@@ -192,6 +196,13 @@ namespace unilateral::lcp
         // measurements").
         order_once();
         own_valid = own->cholesky.factorise(reduced, full_ordering, counters);
+        // The first settling factorisation of the full pattern shows what
+        // it costs against A_FF alone.
+        if (own_valid && n_fixed > reduced_threshold * n &&
+            reduced_factor_flops > 0 &&
+            own->cholesky.factorisation_flops() >
+              full_pattern_allowance * reduced_factor_flops)
+          full_pattern_pays = false;
         return own_valid;
       }
 
@@ -243,7 +254,30 @@ namespace unilateral::lcp
         }
     own->cholesky.relaxed_supernodes = true; // never modified
     own_valid = own->cholesky.factorise(reduced, ordering, counters);
+    if (own_valid)
+      reduced_factor_flops = own->cholesky.factorisation_flops();
     return own_valid;
+  }
+
+  bool
+  ActiveSetSystem::active_set_settling(const std::vector<char> &fixed) const
+  {
+    const ActiveSetFactor *nearest = own_valid ? own.get() : inherited.get();
+    if (!full_pattern_pays || nearest == nullptr ||
+        nearest->fixed.size() != fixed.size())
+      return false;
+    const double changes = count_changes(nearest->fixed, fixed);
+    if (changes > settling_fraction * static_cast<double>(fixed.size()))
+      return false;
+    // The full pattern's factor is larger than A_FF's, and the row
+    // modifications it is made for need a copy of it: on the largest
+    // problems the smaller factor is what fits. The estimate: the copy's
+    // 24 bytes per entry (room_for_modified_copy), for a factor up to
+    // twice the nearest one's, twice over as that check asks.
+    const double nonzeros = nearest->cholesky.has_factor() ?
+                              nearest->cholesky.factor_nonzeros() :
+                              static_cast<double>(A.nonZeros());
+    return memory::fits(4 * 24 * nonzeros, false);
   }
 
   bool

@@ -63,7 +63,10 @@ namespace unilateral::lcp
    * with many (more than a sixth of the unknowns, where the smaller factor
    * pays for a symbolic pass) A_FF is extracted and factorised in the AMD
    * ordering of A restricted to F, "in the ordering established in the
-   * Analyse phase" as Fernandes et al. do for C_RR.
+   * Analyse phase" as Fernandes et al. do for C_RR. Once the active set is
+   * settling (few changes since the nearest factor) the full pattern is
+   * taken whatever the size of X, so that the next, smaller changes can be
+   * made row by row.
    *
    * Factorisations are reused. A factor for exactly this X is used directly.
    * A factor of the full pattern for another X is updated row by row to
@@ -158,8 +161,24 @@ namespace unilateral::lcp
     /// (flops_per_path_entry).
     static constexpr double modification_budget = 0.25;
 
-    /// Fraction of fixed indices above which A_FF is factorised on its own.
+    /// Fraction of fixed indices above which A_FF is factorised on its own,
+    /// unless the active set is settling.
     static constexpr double reduced_threshold = 1.0 / 6.0;
+
+    /// Changes against the nearest factor, as a fraction of the unknowns,
+    /// up to which the active set counts as settling: its next changes are
+    /// then likely few enough to be made row by row, which only a factor
+    /// of the full pattern allows, so that pattern is factorised even where
+    /// A_FF alone would be smaller (benchmarks/masonry_tables/README.md,
+    /// "Design measurements").
+    static constexpr double settling_fraction = 1.0 / 500;
+
+    /// Flops of the full pattern's factorisation, as a multiple of A_FF's,
+    /// above which a settling active set keeps to A_FF: where the fixed
+    /// indices are what keeps the fill low, the larger factor costs more
+    /// than the row modifications save (benchmarks/masonry_tables/README.md,
+    /// "Design measurements").
+    static constexpr double full_pattern_allowance = 1.25;
 
   private:
     /// Factorise K(X), plus @p shift on the diagonal of the free part.
@@ -176,6 +195,14 @@ namespace unilateral::lcp
     /// CHOLMOD fails, or if the result is numerically singular.
     bool
     modify_factor(const std::vector<char> &fixed);
+
+    /// Whether the fixed set @p fixed differs from the nearest factor's
+    /// (own, else inherited) in at most settling_fraction of the unknowns,
+    /// the full pattern has not proved too costly (full_pattern_allowance),
+    /// and its factor with the modification copy is expected to fit in
+    /// memory.
+    bool
+    active_set_settling(const std::vector<char> &fixed) const;
 
     /// Whether the simplicial copy the first update makes fits in half the
     /// memory the run has left (memory::available). It doubles the factor's
@@ -223,6 +250,12 @@ namespace unilateral::lcp
     std::shared_ptr<const ActiveSetFactor> inherited;
     /// Diagonal used for fixed rows: A_jj if positive, else the mean diagonal.
     Vector fixed_diagonal;
+    /// Flops of the latest factorisation of A_FF on its own (own or
+    /// inherited), 0 if none; and whether the full pattern, once factorised
+    /// for a settling active set, stayed within full_pattern_allowance of
+    /// it.
+    double reduced_factor_flops = 0;
+    bool   full_pattern_pays    = true;
     /// Modification flops per entry of L on the changed rows' elimination
     /// paths (SparseCholesky::modification_path_entries), as measured in
     /// the last update: predicts the cost of the next one. CHOLMOD's update
