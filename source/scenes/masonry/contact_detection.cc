@@ -16,6 +16,7 @@
 #include <numeric>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <type_traits>
 
 namespace unilateral::masonry
@@ -377,16 +378,39 @@ namespace unilateral::masonry
                                              face_quadrature,
                                              dealii::update_values |
                                                dealii::update_JxW_values);
-    auto                      node_weights = [&](const FaceRecord<dim> &face) {
-      std::map<unsigned int, double> weight;
-      fe_face_values.reinit(face.cell, face.face_no);
-      face.cell->get_dof_indices(dofs);
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        if (fe.system_to_component_index(i).first == 0)
-          for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
-            weight[result.node_of_dof[dofs[i]]] +=
-              fe_face_values.shape_value_component(i, q, 0) *
-              fe_face_values.JxW(q);
+    // Computed once per face that carries a constraint, on first need: a
+    // face is shared by the constraints of all its nodes.
+    std::vector<std::vector<std::pair<unsigned int, double>>> face_weights(
+      faces.size());
+    const auto node_weight = [&](const std::size_t f, const unsigned int node) {
+      auto &weights = face_weights[f];
+      if (weights.empty())
+        {
+          const FaceRecord<dim> &face = faces[f];
+          fe_face_values.reinit(face.cell, face.face_no);
+          face.cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            if (fe.system_to_component_index(i).first == 0)
+              {
+                double integral = 0;
+                for (unsigned int q = 0; q < fe_face_values.n_quadrature_points;
+                     ++q)
+                  integral += fe_face_values.shape_value_component(i, q, 0) *
+                              fe_face_values.JxW(q);
+                weights.emplace_back(result.node_of_dof[dofs[i]], integral);
+              }
+        }
+      double weight = 0;
+      bool   found  = false;
+      for (const auto &[at, integral] : weights)
+        if (at == node)
+          {
+            weight += integral;
+            found = true;
+          }
+      if (!found)
+        throw std::logic_error("detect_contacts: a constraint's node is not "
+                               "on its face");
       return weight;
     };
 
@@ -792,36 +816,54 @@ namespace unilateral::masonry
     // The weights: per node and direction class, int phi_node over the
     // union of the faces of all its constraints in that direction (a node
     // with two joints on one face counts the face once).
-    std::map<std::pair<unsigned int, unsigned int>, std::set<std::size_t>>
-                              faces_at;
+    // Sorted (node, class, face) triples instead of a map of sets: a wall
+    // of a million unknowns has hundreds of thousands of them.
+    using NodeClass = std::pair<unsigned int, unsigned int>;
+    std::vector<std::pair<NodeClass, std::size_t>> node_faces;
     std::vector<unsigned int> constraint_class(result.constraints.size());
     for (std::size_t k = 0; k < result.constraints.size(); ++k)
       {
         const auto &c       = result.constraints[k];
         constraint_class[k] = classes.classify(c.normal).first;
-        faces_at[{c.lower, constraint_class[k]}].insert(
-          constraint_faces[k][0].begin(), constraint_faces[k][0].end());
+        for (const std::size_t f : constraint_faces[k][0])
+          node_faces.push_back({{c.lower, constraint_class[k]}, f});
         if (c.kind == ConstraintKind::joint)
-          faces_at[{c.upper, constraint_class[k]}].insert(
-            constraint_faces[k][1].begin(), constraint_faces[k][1].end());
+          for (const std::size_t f : constraint_faces[k][1])
+            node_faces.push_back({{c.upper, constraint_class[k]}, f});
       }
-    std::map<std::pair<unsigned int, unsigned int>, double> weight_at;
-    for (const auto &[key, face_set] : faces_at)
+    std::sort(node_faces.begin(), node_faces.end());
+    node_faces.erase(std::unique(node_faces.begin(), node_faces.end()),
+                     node_faces.end());
+    std::vector<std::pair<NodeClass, double>> weight_at;
+    for (const auto &[key, f] : node_faces)
       {
-        double weight = 0;
-        for (const std::size_t f : face_set)
-          weight += node_weights(faces[f]).at(key.first);
-        weight_at[key] = weight;
+        if (weight_at.empty() || weight_at.back().first != key)
+          weight_at.push_back({key, 0.0});
+        weight_at.back().second += node_weight(f, key.first);
       }
+    const auto weight_of = [&](const unsigned int node,
+                               const unsigned int direction_class) {
+      const NodeClass key{node, direction_class};
+      const auto      at =
+        std::lower_bound(weight_at.begin(),
+                         weight_at.end(),
+                         key,
+                         [](const auto &entry, const NodeClass &k) {
+                           return entry.first < k;
+                         });
+      if (at == weight_at.end() || at->first != key)
+        throw std::logic_error("detect_contacts: a constraint without faces");
+      return at->second;
+    };
+    result.weight.reserve(result.constraints.size());
     for (std::size_t k = 0; k < result.constraints.size(); ++k)
       {
         const auto  &c     = result.constraints[k];
-        const double lower = weight_at.at({c.lower, constraint_class[k]});
-        result.weight.push_back(
-          {{lower,
-            c.kind == ConstraintKind::joint ?
-              weight_at.at({c.upper, constraint_class[k]}) :
-              lower}});
+        const double lower = weight_of(c.lower, constraint_class[k]);
+        result.weight.push_back({{lower,
+                                  c.kind == ConstraintKind::joint ?
+                                    weight_of(c.upper, constraint_class[k]) :
+                                    lower}});
       }
     return result;
   }
