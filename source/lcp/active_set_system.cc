@@ -45,6 +45,16 @@ namespace unilateral::lcp
         }
       return result;
     }
+
+    /// Memory of the simplicial copy that row modifications work on, for a
+    /// factor of @p factor_nonzeros entries: values and row indices, the
+    /// copy's room to grow, and the supernodal copy it is converted from,
+    /// about 24 bytes per entry.
+    double
+    modification_copy_bytes(const double factor_nonzeros)
+    {
+      return 24 * factor_nonzeros;
+    }
   } // namespace
 
   ActiveSetSystem::ActiveSetSystem(
@@ -196,9 +206,10 @@ namespace unilateral::lcp
         // measurements").
         order_once();
         own_valid = own->cholesky.factorise(reduced, full_ordering, counters);
-        // The first settling factorisation of the full pattern shows what
-        // it costs against A_FF alone.
-        if (own_valid && n_fixed > reduced_threshold * n &&
+        // The first factorisation of the full pattern taken for a settling
+        // set (A_FF would have been taken otherwise) shows what it costs
+        // against A_FF alone.
+        if (own_valid && settling && n_fixed > reduced_threshold * n &&
             reduced_factor_flops > 0 &&
             own->cholesky.factorisation_flops() >
               full_pattern_allowance * reduced_factor_flops)
@@ -271,13 +282,13 @@ namespace unilateral::lcp
       return false;
     // The full pattern's factor is larger than A_FF's, and the row
     // modifications it is made for need a copy of it: on the largest
-    // problems the smaller factor is what fits. The estimate: the copy's
-    // 24 bytes per entry (room_for_modified_copy), for a factor up to
-    // twice the nearest one's, twice over as that check asks.
-    const double nonzeros = nearest->cholesky.has_factor() ?
-                              nearest->cholesky.factor_nonzeros() :
-                              static_cast<double>(A.nonZeros());
-    return memory::fits(4 * 24 * nonzeros, false);
+    // problems the smaller factor is what fits. The estimate: the copy of
+    // a factor up to twice the nearest one's, twice over as
+    // room_for_modified_copy asks. (The nearest factor exists: own_valid,
+    // and an inherited factor is kept only with one.)
+    return memory::fits(2 * modification_copy_bytes(
+                              2 * nearest->cholesky.factor_nonzeros()),
+                        false);
   }
 
   bool
@@ -285,10 +296,8 @@ namespace unilateral::lcp
   {
     if (own->cholesky.has_modification_copy())
       return true;
-    // Values and row indices, the simplicial copy's room to grow, and the
-    // supernodal copy it is converted from: about 24 bytes per entry.
-    const double copy_bytes = 24 * own->cholesky.factor_nonzeros();
-    return memory::fits(2 * copy_bytes, true);
+    return memory::fits(
+      2 * modification_copy_bytes(own->cholesky.factor_nonzeros()), true);
   }
 
   bool
