@@ -171,15 +171,25 @@ namespace unilateral::lcp
       n_fixed += f;
 
     const bool settling = active_set_settling(fixed);
+    // A distributed factorisation always takes the full pattern: its
+    // symbolic analysis (a parallel ordering over all ranks) is then run
+    // once for every active set.
+    const bool full_pattern = n_fixed <= reduced_threshold * n || settling ||
+                              own->cholesky.distributed();
+    // An inherited factor of the full pattern that no one else holds (the
+    // regularised solve's, handed to the projection) lends its analysis
+    // and memory to ours: the same pattern, so no new analysis and no
+    // fresh pages. It was made non-const by its owner and is about to be
+    // dropped, so taking its storage changes nothing anyone can see.
+    if (full_pattern && inherited != nullptr && inherited.use_count() == 1 &&
+        inherited->reduced_index.empty())
+      own->cholesky.take_analysis_from(
+        const_cast<ActiveSetFactor &>(*inherited).cholesky);
     own->fixed          = fixed;
     own->fixed_diagonal = fixed_diagonal;
     inherited.reset(); // our own factor is closer from now on
 
-    // A distributed factorisation always takes the full pattern: its
-    // symbolic analysis (a parallel ordering over all ranks) is then run
-    // once for every active set.
-    if (n_fixed <= reduced_threshold * n || settling ||
-        own->cholesky.distributed())
+    if (full_pattern)
       {
         // The full pattern: zero the coupling of fixed indices, keep a
         // scaled identity on their diagonal (the conditioning of A).

@@ -253,6 +253,16 @@ namespace unilateral::lcp
 
   SparseCholesky::~SparseCholesky() = default;
 
+  void
+  SparseCholesky::take_analysis_from(SparseCholesky &other)
+  {
+    if (distributed() || other.distributed())
+      return;
+    std::swap(implementation, other.implementation);
+    implementation->factor_valid       = false;
+    other.implementation->factor_valid = false;
+  }
+
   /**
    * The symbolic analysis of A's pattern: the fill-reducing ordering (a
    * given one, or AMD, and METIS's nested dissection as well where AMD

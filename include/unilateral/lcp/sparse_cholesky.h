@@ -80,6 +80,17 @@ namespace unilateral::lcp
     bool
     has_factor() const;
 
+    /**
+     * Take over @p other's symbolic analysis and factor storage, leaving
+     * @p other empty and this without a valid factor until the next
+     * factorise(): a factorisation of the same pattern then needs no new
+     * analysis and no new memory (a system that follows another on the
+     * same pattern, as the projection follows the regularised solve).
+     * Nothing happens if either runs over several ranks.
+     */
+    void
+    take_analysis_from(SparseCholesky &other);
+
     /// Whether this factorisation runs over several ranks (MUMPS).
     bool
     distributed() const;
