@@ -175,7 +175,8 @@ namespace unilateral::masonry
                                  geometry.element,
                                  geometry.blocks_through_thickness,
                                  geometry.thickness * H,
-                                 state->discretisation.triangulation);
+                                 state->discretisation.triangulation,
+                                 mesh_coarsening);
         state->boundaries =
           wall_boundary_names<dim>(state->discretisation.triangulation);
         problem_sizes.n_blocks =
@@ -610,6 +611,20 @@ namespace unilateral::masonry
       .set("max_displacement", max_displacement)
       .set("n_closed_contacts", n_closed_contacts)
       .set("n_degenerate_contacts", n_degenerate_contacts);
+    // The coarse-mesh start, as the plate's: [] when the run had none.
+    std::vector<JsonObject> coarse_levels;
+    if (coarse_start.n_unknowns > 0)
+      coarse_levels.emplace_back()
+        .set("coarsening",
+             std::vector<double>(coarse_start.coarsening.begin(),
+                                 coarse_start.coarsening.end()))
+        .set("n_unknowns", coarse_start.n_unknowns)
+        .set("iterations", coarse_start.iterations)
+        .set("status",
+             coarse_start.status == lcp::Status::inaccurate ?
+               "regularised answer" :
+               lcp::to_string(coarse_start.status));
+    summary.set("coarse_mesh_start", coarse_levels);
     JsonObject &statics = summary.object("statics");
     auto        list    = [](const auto &v) {
       return std::vector<double>(v.begin(), v.end());

@@ -152,8 +152,11 @@ namespace unilateral::masonry
                       const ElementType                element,
                       const unsigned int               blocks_through_thickness,
                       const double                     thickness,
-                      dealii::Triangulation<dim, dim> &triangulation)
+                      dealii::Triangulation<dim, dim> &triangulation,
+                      const std::array<unsigned int, 2> &coarsening)
   {
+    const double       x_size  = cell_size * coarsening[0];
+    const double       y_size  = cell_size * coarsening[1];
     const bool         simplex = element == ElementType::p2;
     const unsigned int layers  = dim == 3 ? blocks_through_thickness : 1;
     const unsigned int nz =
@@ -163,8 +166,8 @@ namespace unilateral::masonry
     std::size_t n_vertices = 0, n_boxes = 0;
     for (const Block &block : layout.blocks)
       {
-        const unsigned int nx = n_cells_along(block.width(), cell_size);
-        const unsigned int ny = n_cells_along(block.height(), cell_size);
+        const unsigned int nx = n_cells_along(block.width(), x_size);
+        const unsigned int ny = n_cells_along(block.height(), y_size);
         n_vertices += static_cast<std::size_t>(nx + 1) * (ny + 1) *
                       (dim == 3 ? nz + 1 : 1) * layers;
         n_boxes += static_cast<std::size_t>(nx) * ny * nz * layers;
@@ -183,8 +186,8 @@ namespace unilateral::masonry
             box.lo = {{block.x0, block.y0, along(0, thickness, layer, layers)}};
             box.hi = {
               {block.x1, block.y1, along(0, thickness, layer + 1, layers)}};
-            box.n = {{n_cells_along(block.width(), cell_size),
-                      n_cells_along(block.height(), cell_size),
+            box.n = {{n_cells_along(block.width(), x_size),
+                      n_cells_along(block.height(), y_size),
                       nz}};
             add_cells<dim>(box,
                            static_cast<unsigned int>(b * layers + layer),
@@ -240,12 +243,14 @@ namespace unilateral::masonry
                          ElementType,
                          unsigned int,
                          double,
-                         dealii::Triangulation<2, 2> &);
+                         dealii::Triangulation<2, 2> &,
+                         const std::array<unsigned int, 2> &);
   template void
   build_triangulation<3>(const Layout &,
                          double,
                          ElementType,
                          unsigned int,
                          double,
-                         dealii::Triangulation<3, 3> &);
+                         dealii::Triangulation<3, 3> &,
+                         const std::array<unsigned int, 2> &);
 } // namespace unilateral::masonry

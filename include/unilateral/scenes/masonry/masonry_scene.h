@@ -1,5 +1,6 @@
 #pragma once
 
+#include <unilateral/lcp/report.h>
 #include <unilateral/scenes/masonry/change_of_variables.h>
 #include <unilateral/scenes/masonry/contact_detection.h>
 #include <unilateral/scenes/masonry/parameters.h>
@@ -160,6 +161,23 @@ namespace unilateral::masonry
     std::vector<NodalDisplacement<dim>>
     nodal_displacements() const;
 
+    /// The coarse-mesh start a run took (n_unknowns 0: none).
+    struct CoarseStart
+    {
+      /// Cells this many times as long along x and y.
+      std::array<unsigned int, 2> coarsening{{1, 1}};
+      unsigned int                n_unknowns = 0;
+      unsigned int                iterations = 0;
+      lcp::Status                 status     = lcp::Status::converged;
+    };
+
+    /// After run(): the coarse-mesh start taken, if any.
+    const CoarseStart &
+    coarse_mesh_start_taken() const
+    {
+      return coarse_start;
+    }
+
     /// After run(): the supports' reactions and the balance of forces.
     const Statics<dim> &
     statics() const
@@ -201,6 +219,10 @@ namespace unilateral::masonry
     void
     output_results(const RunContext &context) const override;
 
+    /// The coarse-mesh start where it applies (coarse_mesh_start.cc).
+    void
+    initial_solution(RunContext &context) override;
+
     void
     print_summary(std::ostream &out, const lcp::Report &report) const override;
 
@@ -215,7 +237,28 @@ namespace unilateral::masonry
     void
     compute_statics();
 
+    /// How many times longer the cells of the coarse-mesh start's mesh are
+    /// along x and y ({1, 1}: this run takes no such start).
+    std::array<unsigned int, 2>
+    coarse_mesh_coarsening(const RunContext &context) const;
+
+    /// Solve this wall on the mesh coarsened by @p coarsening and return
+    /// its displacement at this mesh's nodes as a start (LCP unknowns and
+    /// first active set); empty if that solve failed.
+    lcp::Solution
+    coarse_mesh_start(const RunContext                  &context,
+                      const std::array<unsigned int, 2> &coarsening);
+
+    /// This (solved) wall's displacement at the nodes of @p fine, in
+    /// fine's LCP unknowns, with the constraints it leaves closed active.
+    lcp::Solution
+    interpolate_to(const MasonryScene<dim> &fine) const;
+
     Parameters parameters;
+    /// Cells this many times longer along x and y than h (a coarse-mesh
+    /// start's mesh).
+    std::array<unsigned int, 2> mesh_coarsening{{1, 1}};
+    CoarseStart                 coarse_start;
     /// Set if the scene was given its own layout.
     std::unique_ptr<Layout> custom_layout;
 

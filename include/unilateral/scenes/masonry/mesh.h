@@ -4,6 +4,8 @@
 #include <unilateral/scenes/masonry/parameters.h>
 #include <unilateral/scenes/masonry/supports.h>
 
+#include <array>
+
 namespace dealii
 {
   template <int dim, int spacedim>
@@ -48,7 +50,9 @@ namespace unilateral::masonry
    *
    * Blocks whose sides are not multiples of the cell size get stretched
    * cells; the contact detection then reports non-matching nodes on shared
-   * faces.
+   * faces. @p coarsening: cells @p coarsening[0] times as long in x and
+   * @p coarsening[1] times in y (the coarse meshes of the coarse-mesh
+   * start).
    */
   template <int dim>
   void
@@ -57,5 +61,6 @@ namespace unilateral::masonry
                       ElementType                      element,
                       unsigned int                     blocks_through_thickness,
                       double                           thickness,
-                      dealii::Triangulation<dim, dim> &triangulation);
+                      dealii::Triangulation<dim, dim> &triangulation,
+                      const std::array<unsigned int, 2> &coarsening = {{1, 1}});
 } // namespace unilateral::masonry

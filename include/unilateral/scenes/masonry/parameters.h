@@ -169,6 +169,8 @@ namespace unilateral::masonry
     BoundaryParameters boundary;
     MaterialParameters materials;
     TearingParameters  tearing;
+    /// Start from the same wall solved on a coarser mesh.
+    bool coarse_mesh_start = true;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,373 @@
+/**
+ * The masonry scene's coarse-mesh start (nested iteration, as the plate's):
+ * solve the same wall (the same blocks, supports and loads) on a mesh whose
+ * cells are k times as long along the sides of the blocks that have many
+ * cells (the laminae: m cells along each lamina), and start the solver from
+ * that displacement evaluated at the nodes of this mesh. A joint that the
+ * coarse wall leaves closed starts closed, so PDAS starts near the answer
+ * instead of swinging through thousands of contacts along the bending
+ * laminae (benchmarks/masonry_tables/README.md, "The coarse-mesh start").
+ * A wall with one or two cells per block side (the paper's stack and running
+ * bond) has no coarser mesh with matching nodes and keeps the method's own
+ * start.
+ */
+#include <unilateral/lcp/solve_lcp.h>
+
+#include "scene_state.h"
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <ostream>
+#include <stdexcept>
+
+namespace unilateral::masonry
+{
+  namespace
+  {
+    // A coarsened side of a block keeps at least this many cells: enough
+    // to place where a lamina lifts off to a few percent of its length
+    // (the sizes tried: README, "The coarse-mesh start").
+    constexpr unsigned int coarsest_cells = 20;
+
+    /**
+     * Per axis (x, y), the largest k such that cells k h long keep every
+     * block corner a node (node-to-node contact needs matching nodes on
+     * both sides of every joint) and leave at least coarsest_cells along
+     * each block's side; 1 where no k > 1 does, and along an axis that not
+     * every block is at least twice as long in as in the other. Slender
+     * blocks bend, and where they lift off is what PDAS otherwise finds a
+     * swing at a time; blocks as wide as high move almost rigidly, and the
+     * all-active start is within a few contacts of their answer, closer
+     * than a coarse mesh's (README, "The coarse-mesh start").
+     */
+    std::array<unsigned int, 2>
+    coarsening_of(const Layout &layout, const double h)
+    {
+      const BoundingBox           box = layout.bounding_box();
+      std::array<unsigned int, 2> result{{1, 1}};
+      for (unsigned int axis = 0; axis < 2; ++axis)
+        {
+          // Block corners in cells from the wall's corner; the fewest
+          // cells along a block's side.
+          std::vector<double> corners;
+          double              fewest  = std::numeric_limits<double>::max();
+          bool                slender = true;
+          for (const Block &block : layout.blocks)
+            {
+              const double along  = axis == 0 ? block.width() : block.height();
+              const double across = axis == 0 ? block.height() : block.width();
+              slender             = slender && along >= 2 * across;
+              const double lo =
+                axis == 0 ? block.x0 - box.x0 : block.y0 - box.y0;
+              const double hi =
+                axis == 0 ? block.x1 - box.x0 : block.y1 - box.y0;
+              corners.push_back(lo / h);
+              corners.push_back(hi / h);
+              fewest = std::min(fewest, (hi - lo) / h);
+            }
+          const auto is_multiple = [](const double cells, const unsigned k) {
+            const double ratio = cells / k;
+            return std::abs(ratio - std::round(ratio)) <= 1e-6 * (1 + ratio);
+          };
+          if (!slender)
+            continue;
+          for (unsigned int k = 2; k * coarsest_cells <= fewest + 1e-6; ++k)
+            if (std::all_of(corners.begin(), corners.end(), [&](double c) {
+                  return is_multiple(c, k);
+                }))
+              result[axis] = k;
+        }
+      return result;
+    }
+
+    /**
+     * The cells of a mesh by position: a uniform grid of buckets, each
+     * listing the cells whose bounding box meets it. find() returns a cell
+     * that contains the point (the first in the bucket's list).
+     */
+    template <int dim>
+    class CellLocator
+    {
+    public:
+      using Cell = typename dealii::DoFHandler<dim>::active_cell_iterator;
+
+      CellLocator(const dealii::DoFHandler<dim> &dof_handler,
+                  const dealii::Mapping<dim>    &mapping,
+                  const double                   spacing)
+        : mapping(mapping)
+        , spacing(spacing)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = std::numeric_limits<double>::max();
+            upper[d] = -std::numeric_limits<double>::max();
+          }
+        std::vector<dealii::BoundingBox<dim>> boxes;
+        std::vector<Cell>                     cells;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            boxes.push_back(cell->bounding_box());
+            cells.push_back(cell);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = std::min(lower[d], boxes.back().lower_bound(d));
+                upper[d] = std::max(upper[d], boxes.back().upper_bound(d));
+              }
+          }
+        std::size_t n_buckets = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            counts[d] = static_cast<unsigned int>(
+                          std::floor((upper[d] - lower[d]) / spacing)) +
+                        1;
+            n_buckets *= counts[d];
+          }
+        buckets.resize(n_buckets);
+        for (std::size_t c = 0; c < cells.size(); ++c)
+          {
+            std::array<unsigned int, dim> from, to;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                from[d] = coordinate(boxes[c].lower_bound(d), d);
+                to[d]   = coordinate(boxes[c].upper_bound(d), d);
+              }
+            std::array<unsigned int, dim> at = from;
+            while (true)
+              {
+                buckets[bucket(at)].emplace_back(boxes[c], cells[c]);
+                unsigned int d = 0;
+                while (d < dim && at[d] == to[d])
+                  {
+                    at[d] = from[d];
+                    ++d;
+                  }
+                if (d == dim)
+                  break;
+                ++at[d];
+              }
+          }
+      }
+
+      /// A cell that contains @p point (a default iterator if none does).
+      Cell
+      find(const dealii::Point<dim> &point) const
+      {
+        std::array<unsigned int, dim> at;
+        for (unsigned int d = 0; d < dim; ++d)
+          at[d] = coordinate(point[d], d);
+        const double tolerance = 1e-10 * spacing;
+        for (const auto &[box, cell] : buckets[bucket(at)])
+          if (box.point_inside(point, tolerance))
+            {
+              const dealii::Point<dim> unit =
+                mapping.transform_real_to_unit_cell(cell, point);
+              if (cell->reference_cell().contains_point(unit, 1e-10))
+                return cell;
+            }
+        return Cell();
+      }
+
+    private:
+      unsigned int
+      coordinate(const double x, const unsigned int d) const
+      {
+        const double position = std::floor((x - lower[d]) / spacing);
+        return static_cast<unsigned int>(
+          std::clamp(position, 0.0, static_cast<double>(counts[d] - 1)));
+      }
+
+      std::size_t
+      bucket(const std::array<unsigned int, dim> &at) const
+      {
+        std::size_t index = 0;
+        for (unsigned int d = dim; d-- > 0;)
+          index = index * counts[d] + at[d];
+        return index;
+      }
+
+      const dealii::Mapping<dim>   &mapping;
+      double                        spacing;
+      std::array<double, dim>       lower, upper;
+      std::array<unsigned int, dim> counts;
+      std::vector<std::vector<std::pair<dealii::BoundingBox<dim>, Cell>>>
+        buckets;
+    };
+  } // namespace
+
+  template <int dim>
+  std::array<unsigned int, 2>
+  MasonryScene<dim>::coarse_mesh_coarsening(const RunContext &context) const
+  {
+    const lcp::SolverInfo &method =
+      lcp::SolverRegistry::get(context.solver.method);
+    if (!parameters.coarse_mesh_start || parameters.geometry.from_mesh_file ||
+        !method.warm_start || method.needs_tearing || method.needs_hierarchy)
+      return {{1, 1}};
+    return coarsening_of(state->layout, problem_sizes.cell_size);
+  }
+
+  template <int dim>
+  void
+  MasonryScene<dim>::initial_solution(RunContext &context)
+  {
+    const std::array<unsigned int, 2> coarsening =
+      coarse_mesh_coarsening(context);
+    if (coarsening[0] > 1 || coarsening[1] > 1)
+      lcp_solution = coarse_mesh_start(context, coarsening);
+  }
+
+  template <int dim>
+  lcp::Solution
+  MasonryScene<dim>::coarse_mesh_start(
+    const RunContext                  &context,
+    const std::array<unsigned int, 2> &coarsening)
+  {
+    MasonryScene<dim> coarse(parameters);
+    if (custom_layout)
+      coarse.custom_layout = std::make_unique<Layout>(*custom_layout);
+    coarse.mesh_coarsening = coarsening;
+    RunContext quiet; // the coarse wall's stages are this run's "solve"
+    quiet.parameter_file = context.parameter_file;
+    quiet.solver         = context.solver;
+    // A start needs no exact answer: the regularised solve's is as good,
+    // and a status of inaccurate (no projection, so no exact KKT) is no
+    // failure here.
+    quiet.solver.projection = false;
+    coarse.set_up(quiet);
+    coarse.assemble(quiet);
+    const lcp::Report report =
+      lcp::solve_lcp(coarse.lcp_problem, quiet.solver, coarse.lcp_solution);
+    const bool usable =
+      report.converged() || report.status == lcp::Status::inaccurate;
+    coarse_start = {coarsening,
+                    coarse.problem_sizes.n_unknowns,
+                    report.iterations,
+                    report.status};
+    if (context.progress != nullptr)
+      *context.progress << "  coarse-mesh start: cells " << coarsening[0]
+                        << " x " << coarsening[1] << " times as long, "
+                        << coarse.problem_sizes.n_unknowns << " unknowns, "
+                        << report.solver << " "
+                        << (usable ? "regularised answer" :
+                                     lcp::to_string(report.status))
+                        << " after " << report.iterations << " iterations"
+                        << std::endl;
+    // A failed coarse solve is no start at all: the method's own is safer.
+    if (!usable)
+      return lcp::Solution();
+    return coarse.interpolate_to(*this);
+  }
+
+  template <int dim>
+  lcp::Solution
+  MasonryScene<dim>::interpolate_to(const MasonryScene<dim> &fine) const
+  {
+    const Discretisation<dim> &coarse_discretisation = state->discretisation;
+    const Discretisation<dim> &fine_discretisation = fine.state->discretisation;
+    const std::vector<double>  coarse_displacement =
+      state->change->to_physical(lcp_solution.u.data());
+    const CellLocator<dim> locator(coarse_discretisation.dof_handler,
+                                   *coarse_discretisation.mapping,
+                                   problem_sizes.cell_size);
+
+    // The meshes are nested: each fine cell lies in the coarse cell that
+    // holds its centre, and its DOFs get the coarse field at their support
+    // points.
+    const dealii::FiniteElement<dim> &coarse_fe = *coarse_discretisation.fe;
+    const dealii::FiniteElement<dim> &fine_fe   = *fine_discretisation.fe;
+    const dealii::FiniteElement<dim> &scalar_fe =
+      *coarse_discretisation.scalar_fe;
+    const std::vector<dealii::Point<dim>> &support =
+      fine_fe.get_unit_support_points();
+    std::vector<double> fine_displacement(fine.problem_sizes.n_dofs, 0.0);
+    std::vector<dealii::types::global_dof_index> fine_dofs(
+      fine_fe.n_dofs_per_cell());
+    std::vector<dealii::types::global_dof_index> coarse_dofs(
+      coarse_fe.n_dofs_per_cell());
+    for (const auto &cell :
+         fine_discretisation.dof_handler.active_cell_iterators())
+      {
+        const auto coarse_cell = locator.find(cell->center());
+        if (coarse_cell == typename CellLocator<dim>::Cell())
+          throw std::logic_error("coarse-mesh start: no coarse cell holds the "
+                                 "centre of a fine cell (the meshes are not "
+                                 "nested)");
+        coarse_cell->get_dof_indices(coarse_dofs);
+        cell->get_dof_indices(fine_dofs);
+        for (unsigned int i = 0; i < fine_dofs.size(); ++i)
+          {
+            const dealii::Point<dim> point =
+              fine_discretisation.mapping->transform_unit_to_real_cell(
+                cell, support[i]);
+            const dealii::Point<dim> unit =
+              coarse_discretisation.mapping->transform_real_to_unit_cell(
+                coarse_cell, point);
+            const unsigned int component =
+              fine_fe.system_to_component_index(i).first;
+            double value = 0;
+            for (unsigned int j = 0; j < coarse_dofs.size(); ++j)
+              {
+                const auto [j_component, j_base] =
+                  coarse_fe.system_to_component_index(j);
+                if (j_component == component)
+                  value += coarse_displacement[coarse_dofs[j]] *
+                           scalar_fe.shape_value(j_base, unit);
+              }
+            fine_displacement[fine_dofs[i]] = value;
+          }
+      }
+
+    // The fine LCP unknowns u~ = C~ u, and the first active set: the
+    // constraints closed in the coarse field (to round-off).
+    const ChangeOfVariables<dim> &change = *fine.state->change;
+    lcp::Solution                 start;
+    start.u        = lcp::Vector::Zero(change.n_unknowns());
+    double largest = 0;
+    for (const double value : fine_displacement)
+      largest = std::max(largest, std::abs(value));
+    for (unsigned int v = 0; v < change.n_unknowns(); ++v)
+      for (const auto &[dof, coefficient] : change.row(v))
+        start.u[v] += coefficient * fine_displacement[dof];
+    // Closed: a gap of round-off against the largest displacement (where
+    // the coarse joint is closed, both sides are interpolated from nodes
+    // that coincide).
+    const double        band    = 1e-9 * largest;
+    const lcp::Problem &problem = fine.lcp_problem;
+    for (lcp::Index k = 0; k < problem.n_constrained(); ++k)
+      {
+        const lcp::Index i = problem.constrained[k];
+        if (start.u[i] - problem.lower_bound[k] <= band)
+          {
+            start.active_set.push_back(i);
+            start.u[i] = problem.lower_bound[k];
+          }
+      }
+    return start;
+  }
+
+  template std::array<unsigned int, 2>
+  MasonryScene<2>::coarse_mesh_coarsening(const RunContext &) const;
+  template std::array<unsigned int, 2>
+  MasonryScene<3>::coarse_mesh_coarsening(const RunContext &) const;
+  template void
+  MasonryScene<2>::initial_solution(RunContext &);
+  template void
+  MasonryScene<3>::initial_solution(RunContext &);
+  template lcp::Solution
+  MasonryScene<2>::coarse_mesh_start(const RunContext &,
+                                     const std::array<unsigned int, 2> &);
+  template lcp::Solution
+  MasonryScene<3>::coarse_mesh_start(const RunContext &,
+                                     const std::array<unsigned int, 2> &);
+  template lcp::Solution
+  MasonryScene<2>::interpolate_to(const MasonryScene<2> &) const;
+  template lcp::Solution
+  MasonryScene<3>::interpolate_to(const MasonryScene<3> &) const;
+} // namespace unilateral::masonry
