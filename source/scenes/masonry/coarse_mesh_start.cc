@@ -1,12 +1,12 @@
 /**
  * The masonry scene's coarse-mesh start (nested iteration, as the plate's):
  * solve the same wall (the same blocks, supports and loads) on a mesh whose
- * cells are k times as long along the sides of the blocks that have many
- * cells (the laminae: m cells along each lamina), and start the solver from
- * that displacement evaluated at the nodes of this mesh. A joint that the
- * coarse wall leaves closed starts closed, so PDAS starts near the answer
- * instead of swinging through thousands of contacts along the bending
- * laminae (benchmarks/masonry_tables/README.md, "The coarse-mesh start").
+ * cells are k times as long along slender blocks with many cells along them
+ * (the laminae: m cells along each lamina), and start the solver from that
+ * displacement evaluated at the nodes of this mesh. A joint that the coarse
+ * wall leaves closed starts closed, so PDAS starts near the answer instead
+ * of swinging through thousands of contacts along the bending laminae
+ * (benchmarks/masonry_tables/README.md, "The coarse-mesh start (laminae)").
  * A wall with one or two cells per block side (the paper's stack and running
  * bond) has no coarser mesh with matching nodes and keeps the method's own
  * start.
@@ -23,7 +23,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <ostream>
 #include <stdexcept>
 
@@ -33,7 +32,7 @@ namespace unilateral::masonry
   {
     // A coarsened side of a block keeps at least this many cells: enough
     // to place where a lamina lifts off to a few percent of its length
-    // (the sizes tried: README, "The coarse-mesh start").
+    // (the sizes tried: the README named above).
     constexpr unsigned int coarsest_cells = 20;
 
     /**
@@ -45,7 +44,7 @@ namespace unilateral::masonry
      * blocks bend, and where they lift off is what PDAS otherwise finds a
      * swing at a time; blocks as wide as high move almost rigidly, and the
      * all-active start is within a few contacts of their answer, closer
-     * than a coarse mesh's (README, "The coarse-mesh start").
+     * than a coarse mesh's (measured: the README named above).
      */
     std::array<unsigned int, 2>
     coarsening_of(const Layout &layout, const double h)
@@ -72,12 +71,12 @@ namespace unilateral::masonry
               corners.push_back(hi / h);
               fewest = std::min(fewest, (hi - lo) / h);
             }
+          if (!slender)
+            continue;
           const auto is_multiple = [](const double cells, const unsigned k) {
             const double ratio = cells / k;
             return std::abs(ratio - std::round(ratio)) <= 1e-6 * (1 + ratio);
           };
-          if (!slender)
-            continue;
           for (unsigned int k = 2; k * coarsest_cells <= fewest + 1e-6; ++k)
             if (std::all_of(corners.begin(), corners.end(), [&](double c) {
                   return is_multiple(c, k);
