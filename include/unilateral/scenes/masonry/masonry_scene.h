@@ -250,7 +250,8 @@ namespace unilateral::masonry
                       const std::array<unsigned int, 2> &coarsening);
 
     /// This (solved) wall's displacement at the nodes of @p fine, in
-    /// fine's LCP unknowns, with the constraints it leaves closed active.
+    /// fine's LCP unknowns, with the constraints it leaves closed (to its
+    /// interpolation error) active.
     lcp::Solution
     interpolate_to(const MasonryScene<dim> &fine) const;
 
