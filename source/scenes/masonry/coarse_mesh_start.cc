@@ -16,9 +16,10 @@
 
 #include "scene_state.h"
 
-#include <deal.II/base/bounding_box.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
 
 #include <algorithm>
 #include <array>
@@ -26,6 +27,7 @@
 #include <limits>
 #include <ostream>
 #include <stdexcept>
+#include <tuple>
 
 namespace unilateral::masonry
 {
@@ -86,119 +88,6 @@ namespace unilateral::masonry
         }
       return result;
     }
-
-    /**
-     * The cells of a mesh by position: a uniform grid of buckets, each
-     * listing the cells whose bounding box meets it. find() returns a cell
-     * that contains the point (the first in the bucket's list).
-     */
-    template <int dim>
-    class CellLocator
-    {
-    public:
-      using Cell = typename dealii::DoFHandler<dim>::active_cell_iterator;
-
-      CellLocator(const dealii::DoFHandler<dim> &dof_handler,
-                  const dealii::Mapping<dim>    &mapping,
-                  const double                   spacing)
-        : mapping(mapping)
-        , spacing(spacing)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            lower[d] = std::numeric_limits<double>::max();
-            upper[d] = -std::numeric_limits<double>::max();
-          }
-        std::vector<dealii::BoundingBox<dim>> boxes;
-        std::vector<Cell>                     cells;
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          {
-            boxes.push_back(cell->bounding_box());
-            cells.push_back(cell);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                lower[d] = std::min(lower[d], boxes.back().lower_bound(d));
-                upper[d] = std::max(upper[d], boxes.back().upper_bound(d));
-              }
-          }
-        std::size_t n_buckets = 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            counts[d] = static_cast<unsigned int>(
-                          std::floor((upper[d] - lower[d]) / spacing)) +
-                        1;
-            n_buckets *= counts[d];
-          }
-        buckets.resize(n_buckets);
-        for (std::size_t c = 0; c < cells.size(); ++c)
-          {
-            std::array<unsigned int, dim> from, to;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                from[d] = coordinate(boxes[c].lower_bound(d), d);
-                to[d]   = coordinate(boxes[c].upper_bound(d), d);
-              }
-            std::array<unsigned int, dim> at = from;
-            while (true)
-              {
-                buckets[bucket(at)].emplace_back(boxes[c], cells[c]);
-                unsigned int d = 0;
-                while (d < dim && at[d] == to[d])
-                  {
-                    at[d] = from[d];
-                    ++d;
-                  }
-                if (d == dim)
-                  break;
-                ++at[d];
-              }
-          }
-      }
-
-      /// A cell that contains @p point (a default iterator if none does).
-      Cell
-      find(const dealii::Point<dim> &point) const
-      {
-        std::array<unsigned int, dim> at;
-        for (unsigned int d = 0; d < dim; ++d)
-          at[d] = coordinate(point[d], d);
-        const double tolerance = 1e-10 * spacing;
-        for (const auto &[box, cell] : buckets[bucket(at)])
-          if (box.point_inside(point, tolerance))
-            {
-              const dealii::Point<dim> unit =
-                mapping.transform_real_to_unit_cell(cell, point);
-              if (cell->reference_cell().contains_point(unit, 1e-10))
-                return cell;
-            }
-        return Cell();
-      }
-
-    private:
-      unsigned int
-      coordinate(const double x, const unsigned int d) const
-      {
-        const double position = std::floor((x - lower[d]) / spacing);
-        return static_cast<unsigned int>(
-          std::clamp(position, 0.0, static_cast<double>(counts[d] - 1)));
-      }
-
-      std::size_t
-      bucket(const std::array<unsigned int, dim> &at) const
-      {
-        std::size_t index = 0;
-        for (unsigned int d = dim; d-- > 0;)
-          index = index * counts[d] + at[d];
-        return index;
-      }
-
-      const dealii::Mapping<dim>   &mapping;
-      double                        spacing;
-      std::array<double, dim>       lower, upper;
-      std::array<unsigned int, dim> counts;
-      std::vector<std::vector<std::pair<dealii::BoundingBox<dim>, Cell>>>
-        buckets;
-    };
   } // namespace
 
   template <int dim>
@@ -273,13 +162,31 @@ namespace unilateral::masonry
     const Discretisation<dim> &fine_discretisation = fine.state->discretisation;
     const std::vector<double>  coarse_displacement =
       state->change->to_physical(lcp_solution.u.data());
-    const CellLocator<dim> locator(coarse_discretisation.dof_handler,
-                                   *coarse_discretisation.mapping,
-                                   problem_sizes.cell_size);
-
     // The meshes are nested: each fine cell lies in the coarse cell that
-    // holds its centre, and its DOFs get the coarse field at their support
-    // points.
+    // holds its centre (GridTools::compute_point_locations).
+    std::vector<dealii::Point<dim>> centres;
+    centres.reserve(fine_discretisation.triangulation.n_active_cells());
+    for (const auto &cell :
+         fine_discretisation.triangulation.active_cell_iterators())
+      centres.push_back(cell->center());
+    const dealii::GridTools::Cache<dim> cache(
+      coarse_discretisation.triangulation, *coarse_discretisation.mapping);
+    const auto located =
+      dealii::GridTools::compute_point_locations(cache, centres);
+    const auto &holding_cells = std::get<0>(located);
+    const auto &centres_held  = std::get<2>(located);
+    std::vector<typename dealii::DoFHandler<dim>::active_cell_iterator>
+      coarse_cell_of(centres.size());
+    for (std::size_t c = 0; c < holding_cells.size(); ++c)
+      for (const unsigned int index : centres_held[c])
+        coarse_cell_of[index] =
+          typename dealii::DoFHandler<dim>::active_cell_iterator(
+            &coarse_discretisation.triangulation,
+            holding_cells[c]->level(),
+            holding_cells[c]->index(),
+            &coarse_discretisation.dof_handler);
+
+    // Each fine cell's DOFs get the coarse field at their support points.
     const dealii::FiniteElement<dim> &coarse_fe = *coarse_discretisation.fe;
     const dealii::FiniteElement<dim> &fine_fe   = *fine_discretisation.fe;
     const dealii::FiniteElement<dim> &scalar_fe =
@@ -294,8 +201,8 @@ namespace unilateral::masonry
     for (const auto &cell :
          fine_discretisation.dof_handler.active_cell_iterators())
       {
-        const auto coarse_cell = locator.find(cell->center());
-        if (coarse_cell == typename CellLocator<dim>::Cell())
+        const auto &coarse_cell = coarse_cell_of[cell->active_cell_index()];
+        if (coarse_cell.state() != dealii::IteratorState::valid)
           throw std::logic_error("coarse-mesh start: no coarse cell holds the "
                                  "centre of a fine cell (the meshes are not "
                                  "nested)");
