@@ -522,10 +522,16 @@ namespace unilateral::lcp
     };
     for (Index column = 0; column < B.cols(); ++column)
       {
-        const Vector b_column     = B.col(column);
-        const double free_target  = 2e-14 * norm_on(free_rows, b_column);
-        const double fixed_target = 2e-14 * norm_on(fixed_rows, b_column);
-        const auto   small_enough = [&](const Vector &residual) {
+        const Vector b_column = B.col(column);
+        // A residual on a fixed row moves the free rows' forces by about
+        // as much (its diagonal is A's), so it need be no smaller than the
+        // free rows' target: where b is zero on the fixed rows (bounds at
+        // zero), a target of their own would demand an exact zero, which
+        // round-off grants or not by the BLAS's summation order.
+        const double free_target = 2e-14 * norm_on(free_rows, b_column);
+        const double fixed_target =
+          std::max(2e-14 * norm_on(fixed_rows, b_column), free_target);
+        const auto small_enough = [&](const Vector &residual) {
           return norm_on(free_rows, residual) <= free_target &&
                  norm_on(fixed_rows, residual) <= fixed_target;
         };
