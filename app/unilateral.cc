@@ -1,5 +1,6 @@
 // The unilateral executable: everything lives in the core library.
 #include <unilateral/application.h>
+#include <unilateral/base/blas_threads.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -58,7 +59,8 @@ namespace
  * mpirun and may still restart itself with huge pages: an execv after
  * MPI_Init would start MPI twice in one process. Under a launcher there is
  * no restart (`mpirun -x GLIBC_TUNABLES=glibc.malloc.hugetlb=1` gives every
- * rank huge pages). Every rank reads the same file and fails alike on bad
+ * rank huge pages). Ranks sharing a machine run one BLAS thread each. Every
+ * rank reads the same file and fails alike on bad
  * input; rank 0 alone prints and writes.
  */
 int
@@ -70,7 +72,8 @@ main(int argc, char **argv)
         restart_with_huge_pages(argv);
       });
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool                               speaks =
+  unilateral::blas::one_thread_per_rank(MPI_COMM_WORLD);
+  const bool speaks =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ofstream nowhere; // never opened: what is written to it is dropped
   return unilateral::run_application(argc,

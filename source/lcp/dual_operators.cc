@@ -1,11 +1,10 @@
+#include <unilateral/base/blas_threads.h>
 #include <unilateral/base/ranks.h>
 #include <unilateral/lcp/dual_operators.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <Eigen/Dense>
-
-#include <dlfcn.h>
 
 #include <algorithm>
 #include <chrono>
@@ -39,45 +38,13 @@ namespace unilateral::lcp
     };
   } // namespace
 
-  namespace
-  {
-    // OpenBLAS's thread count, found at run time: the BLAS is chosen by
-    // Debian's alternatives and may be another.
-    using GetThreads = int (*)();
-    using SetThreads = void (*)(int);
-
-    int
-    blas_thread_count()
-    {
-      const auto get = reinterpret_cast<GetThreads>(
-        dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-      return get != nullptr ? get() : 0;
-    }
-
-    void
-    set_blas_thread_count(const int n)
-    {
-      const auto set = reinterpret_cast<SetThreads>(
-        dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-      if (set != nullptr && n > 0)
-        set(n);
-    }
-  } // namespace
-
   DualOperators::DualOperators(const Tearing &tearing)
     : torn(tearing)
-    , blas_threads(blas_thread_count())
   {
-    set_blas_thread_count(1);
     Stopwatch watch(setup_seconds);
     pseudo_inverses();
     coarse_space();
     own_subdomains();
-  }
-
-  DualOperators::~DualOperators()
-  {
-    set_blas_thread_count(blas_threads);
   }
 
   // Rank r takes the subdomains whose midpoint of work (n_s^2 per subdomain,

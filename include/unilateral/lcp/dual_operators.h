@@ -1,5 +1,6 @@
 #pragma once
 
+#include <unilateral/base/blas_threads.h>
 #include <unilateral/lcp/problem.h>
 #include <unilateral/lcp/report.h>
 #include <unilateral/lcp/sparse_cholesky.h>
@@ -42,9 +43,6 @@ namespace unilateral::lcp
   {
   public:
     explicit DualOperators(const Tearing &tearing);
-
-    /// Gives OpenBLAS its threads back.
-    ~DualOperators();
 
     DualOperators(const DualOperators &) = delete;
     DualOperators &
@@ -151,6 +149,8 @@ namespace unilateral::lcp
     void
     own_subdomains();
 
+    /// OpenBLAS on one thread while this lives (see the class comment).
+    blas::ScopedThreads      one_blas_thread{1};
     const Tearing           &torn;
     std::vector<DenseMatrix> pseudo_inverse, rigid;
     /// This rank's subdomains, as runs of one shape.
@@ -162,10 +162,8 @@ namespace unilateral::lcp
     SparseCholesky              coarse;
     bool                        factorised = false;
     Counters                    setup_counters;
-    /// OpenBLAS's threads before (0: not OpenBLAS).
-    int                  blas_threads  = 0;
-    double               setup_seconds = 0, factorisation_seconds = 0;
-    mutable unsigned int n_products = 0, n_coarse_solves = 0;
-    mutable double       product_seconds = 0, coarse_seconds = 0;
+    double                      setup_seconds = 0, factorisation_seconds = 0;
+    mutable unsigned int        n_products = 0, n_coarse_solves = 0;
+    mutable double              product_seconds = 0, coarse_seconds = 0;
   };
 } // namespace unilateral::lcp
