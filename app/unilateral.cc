@@ -59,9 +59,9 @@ namespace
  * mpirun and may still restart itself with huge pages: an execv after
  * MPI_Init would start MPI twice in one process. Under a launcher there is
  * no restart (`mpirun -x GLIBC_TUNABLES=glibc.malloc.hugetlb=1` gives every
- * rank huge pages). Ranks sharing a machine run one BLAS thread each. Every
- * rank reads the same file and fails alike on bad
- * input; rank 0 alone prints and writes.
+ * rank huge pages). Ranks sharing a machine run one BLAS thread each.
+ * Every rank reads the same file and fails alike on bad input; rank 0
+ * alone prints and writes.
  */
 int
 main(int argc, char **argv)
