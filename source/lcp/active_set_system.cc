@@ -1,5 +1,6 @@
 #include <unilateral/base/memory.h>
 #include <unilateral/lcp/active_set_system.h>
+#include <unilateral/lcp/problem.h>
 
 #include <algorithm>
 #include <cmath>
@@ -68,11 +69,8 @@ namespace unilateral::lcp
   {
     // A_FF must hold every body: a numerically singular factor is refused.
     own->cholesky.minimum_rcond = 1e-14;
-    const Vector diagonal       = A.diagonal();
-    double       mean           = diagonal.size() > 0 ? diagonal.mean() : 1.0;
-    if (!(mean > 0))
-      mean = 1.0;
-    fixed_diagonal = diagonal;
+    const double mean           = diagonal_scale(A);
+    fixed_diagonal              = A.diagonal();
     for (Index i = 0; i < fixed_diagonal.size(); ++i)
       if (!(fixed_diagonal[i] > 0))
         fixed_diagonal[i] = mean;
@@ -415,7 +413,7 @@ namespace unilateral::lcp
   ActiveSetSystem::near_null_direction(const std::vector<char> &fixed)
   {
     const Index  n    = A.rows();
-    const double mean = A.diagonal().mean() > 0 ? A.diagonal().mean() : 1.0;
+    const double mean = diagonal_scale(A);
     // The shifted matrix is definite by construction; the singularity test
     // would refuse exactly what is looked for.
     const double minimum_rcond  = own->cholesky.minimum_rcond;

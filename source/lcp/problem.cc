@@ -257,6 +257,13 @@ namespace unilateral::lcp
   }
 
   double
+  diagonal_scale(const SparseMatrix &A)
+  {
+    const double mean = A.rows() > 0 ? A.diagonal().mean() : 1.0;
+    return mean > 0 ? mean : 1.0;
+  }
+
+  double
   energy(const Problem &problem, const Vector &u)
   {
     return 0.5 * u.dot(problem.A * u) - problem.b.dot(u);
@@ -309,9 +316,7 @@ namespace unilateral::lcp
       if (!mask[i])
         result.stationarity =
           std::max(result.stationarity, std::abs(lambda[i]));
-    double mean_diagonal = n > 0 ? problem.A.diagonal().mean() : 1.0;
-    if (!(mean_diagonal > 0))
-      mean_diagonal = 1.0;
+    const double mean_diagonal = diagonal_scale(problem.A);
     for (Index k = 0; k < problem.n_constrained(); ++k)
       {
         const Index  i     = problem.constrained[k];

@@ -236,12 +236,9 @@ namespace unilateral::lcp
           std::make_unique<LabelledLines>(*progress, "projection: ");
         labelled = std::make_unique<std::ostream>(labelled_buffer.get());
       }
-    const double mean_diagonal =
-      problem.size() > 0 && problem.A.diagonal().mean() > 0 ?
-        problem.A.diagonal().mean() :
-        1.0;
-    const double last_eps = 1e-14 * mean_diagonal;
-    double       eps_k    = first_eps;
+    const double mean_diagonal = diagonal_scale(problem.A);
+    const double last_eps      = 1e-14 * mean_diagonal;
+    double       eps_k         = first_eps;
 
     SolverParameters projection_parameters = parameters;
     Solution         start                 = solution;

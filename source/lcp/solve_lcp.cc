@@ -236,12 +236,9 @@ namespace unilateral::lcp
       Report                 &report = outcome.report;
       report.solver                  = info.name;
 
-      const double relative_eps = relative_regularisation(attempt);
-      const bool   regularise   = relative_eps > 0;
-      const double mean_diagonal =
-        problem.size() > 0 && problem.A.diagonal().mean() > 0 ?
-          problem.A.diagonal().mean() :
-          1.0;
+      const double relative_eps  = relative_regularisation(attempt);
+      const bool   regularise    = relative_eps > 0;
+      const double mean_diagonal = diagonal_scale(problem.A);
       if (!regularise)
         run_method(attempt, problem, solution, report, progress);
       else
@@ -576,9 +573,7 @@ namespace unilateral::lcp
   {
     if (problem.known_semidefinite || problem.size() == 0)
       return;
-    const double mean_diagonal = problem.A.diagonal().mean();
-    const double shift =
-      semidefinite_shift * (mean_diagonal > 0 ? mean_diagonal : 1.0);
+    const double shift   = semidefinite_shift * diagonal_scale(problem.A);
     SparseMatrix shifted = problem.A;
     for (Index j = 0; j < problem.size(); ++j)
       shifted.coeffRef(j, j) += shift;

@@ -125,6 +125,11 @@ namespace unilateral::lcp
   std::vector<Index>
   diagonal_positions(const SparseMatrix &A);
 
+  /// The mean of @p A's diagonal, or 1 where that is not positive (an
+  /// empty or indefinite A): the unit of every relative eps and shift.
+  double
+  diagonal_scale(const SparseMatrix &A);
+
   /// The objective 1/2 u^T A u - b^T u.
   double
   energy(const Problem &problem, const Vector &u);
