@@ -189,8 +189,6 @@ namespace unilateral::masonry
     // Each fine cell's DOFs get the coarse field at their support points.
     const dealii::FiniteElement<dim> &coarse_fe = *coarse_discretisation.fe;
     const dealii::FiniteElement<dim> &fine_fe   = *fine_discretisation.fe;
-    const dealii::FiniteElement<dim> &scalar_fe =
-      *coarse_discretisation.scalar_fe;
     const std::vector<dealii::Point<dim>> &support =
       fine_fe.get_unit_support_points();
     std::vector<double> fine_displacement(fine.problem_sizes.n_dofs, 0.0);
@@ -220,13 +218,9 @@ namespace unilateral::masonry
               fine_fe.system_to_component_index(i).first;
             double value = 0;
             for (unsigned int j = 0; j < coarse_dofs.size(); ++j)
-              {
-                const auto [j_component, j_base] =
-                  coarse_fe.system_to_component_index(j);
-                if (j_component == component)
-                  value += coarse_displacement[coarse_dofs[j]] *
-                           scalar_fe.shape_value(j_base, unit);
-              }
+              if (coarse_fe.system_to_component_index(j).first == component)
+                value += coarse_displacement[coarse_dofs[j]] *
+                         coarse_fe.shape_value_component(j, unit, component);
             fine_displacement[fine_dofs[i]] = value;
           }
       }
