@@ -2,6 +2,7 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
 #include <unilateral/base/ranks.h>
+#include <unilateral/base/timestamped_stream.h>
 #include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/scene.h>
 
@@ -110,9 +111,10 @@ namespace unilateral
         prm.declare_entry("Print timings",
                           "true",
                           dealii::Patterns::Bool(),
-                          "Print the table of wall time per stage at the end "
-                          "(tests switch it off: their output must not depend "
-                          "on time).");
+                          "Print the table of wall time per stage at the end, "
+                          "and begin each progress line with the seconds "
+                          "since the run started (tests switch it off: their "
+                          "output must not depend on time).");
         prm.declare_entry("Progress",
                           "true",
                           dealii::Patterns::Bool(),
@@ -370,11 +372,16 @@ namespace unilateral
             context.write_vtu && scene->writes_output_in_parallel();
         }
 
+      // With timings on, each progress line says when it was written,
+      // counted from the moment the timer's total starts.
+      TimestampedStream   timed_progress(out);
       dealii::TimerOutput timer(out,
                                 dealii::TimerOutput::never,
                                 dealii::TimerOutput::wall_times);
       context.out      = &out;
-      context.progress = progress ? &out : nullptr;
+      context.progress = !progress             ? nullptr :
+                         context.print_timings ? &timed_progress :
+                                                 &out;
       context.timer    = &timer;
 
       // Valid, but surprising: say so.

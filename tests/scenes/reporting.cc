@@ -5,8 +5,14 @@
 //  - 'KKT tolerance = 0' is refused (nothing floating-point passes it);
 //  - counts are in the right number ("1 block", "after 1 iteration");
 //  - the projection step's progress lines are labelled (they repeated the
-//    solve's line word for word).
+//    solve's line word for word);
+//  - with timings on, each progress line begins with the seconds since the
+//    run started, and no other line does; with timings off, none does.
 #include "../application_test_tools.h"
+
+#include <regex>
+#include <sstream>
+#include <utility>
 
 using namespace application_test;
 
@@ -20,6 +26,23 @@ namespace
   contains(const std::string &text, const std::string &fragment)
   {
     return text.find(fragment) != std::string::npos;
+  }
+
+  /// How many lines of @p text contain @p fragment, and how many of those
+  /// begin with an elapsed time "[   0.1 s] ".
+  std::pair<int, int>
+  lines_with_times(const std::string &text, const std::string &fragment)
+  {
+    const std::regex    time_prefix(R"(^\[ *[0-9]+\.[0-9] s\] )");
+    std::istringstream  lines(text);
+    std::pair<int, int> counts{0, 0};
+    for (std::string line; std::getline(lines, line);)
+      if (contains(line, fragment))
+        {
+          ++counts.first;
+          counts.second += std::regex_search(line, time_prefix);
+        }
+    return counts;
   }
 } // namespace
 
@@ -75,5 +98,26 @@ main()
   const Result progress = run({"progress.prm"});
   std::cout << "progress: the projection's lines are labelled: "
             << yes_no(contains(progress.out, "    projection: pdas iteration"))
+            << "\n";
+  const auto untimed = lines_with_times(progress.out, "pdas iteration");
+  std::cout << "progress with timings off: " << untimed.first
+            << " iteration lines, " << untimed.second << " with a time\n";
+
+  write("timed_progress.prm",
+        "subsection Masonry\n  set Blocks per side = 3\nend\n"
+        "subsection Output\n  set Directory = results\nend\n");
+  const Result timed          = run({"timed_progress.prm"});
+  const auto   progress_lines = lines_with_times(timed.out, "iteration ");
+  const auto   all_lines      = lines_with_times(timed.out, "");
+  std::cout << "progress with timings on: " << progress_lines.first
+            << " iteration lines, all with a time: "
+            << yes_no(progress_lines.second == progress_lines.first)
+            << "; other lines with a time: "
+            << all_lines.second - progress_lines.second
+            << " (the set-up's and solve's progress lines), "
+            << "the summary's and the timer table's without: "
+            << yes_no(lines_with_times(timed.out, "energy").second == 0 &&
+                      lines_with_times(timed.out, "Total wallclock").second ==
+                        0)
             << "\n";
 }
