@@ -3,6 +3,7 @@
 #include <unilateral/base/memory.h>
 #include <unilateral/base/ranks.h>
 #include <unilateral/base/timestamped_stream.h>
+#include <unilateral/base/version.h>
 #include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/scene.h>
 
@@ -27,6 +28,8 @@ namespace unilateral
       "  unilateral --print-parameters [prm|json]\n"
       "                                     print every parameter with its\n"
       "                                     documentation and default\n"
+      "  unilateral --version               the git commit built and the\n"
+      "                                     deal.II it runs on\n"
       "  unilateral --help                  this text\n"
       "\n"
       "A run writes into <Output/Directory>/<Output/Run name>/ (by default\n"
@@ -228,6 +231,7 @@ namespace unilateral
       JsonObject summary;
       summary.set("scene", scene)
         .set("run_name", context.run_name)
+        .set("version", version::summary())
         .set("status", "error")
         .set("message", message)
         .set("converged", false);
@@ -439,8 +443,11 @@ namespace unilateral
       {
         const std::string first = argc > 1 ? argv[1] : "";
         const bool        help  = first == "--help" || first == "-h";
-        // --help takes nothing after it, --print-parameters one format.
-        const int most = help ? 2 : first == "--print-parameters" ? 3 : argc;
+        // --help and --version take nothing after them, --print-parameters
+        // one format.
+        const int most = help || first == "--version"  ? 2 :
+                         first == "--print-parameters" ? 3 :
+                                                         argc;
         if (argc > most)
           {
             std::string before = first;
@@ -453,6 +460,11 @@ namespace unilateral
           {
             (argc < 2 ? err : out) << usage_text;
             return argc < 2 ? 1 : 0;
+          }
+        if (first == "--version")
+          {
+            out << version::describe() << "\n";
+            return 0;
           }
         if (first == "--print-parameters")
           return print_parameters(argc > 2 ? argv[2] : "prm", out);

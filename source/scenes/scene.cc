@@ -1,6 +1,7 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
 #include <unilateral/base/text.h>
+#include <unilateral/base/version.h>
 #include <unilateral/lcp/io.h>
 #include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/scenes/scene.h>
@@ -51,6 +52,7 @@ namespace unilateral
       JsonObject summary;
       summary.set("scene", scene)
         .set("run_name", context.run_name)
+        .set("version", version::summary())
         .set("solver", report.solver)
         .set("schur_complement", context.solver.schur_complement)
         .set("n_unknowns", problem.size())

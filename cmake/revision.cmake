@@ -1,0 +1,28 @@
+# Run at every build (target unilateral_revision): writes OUTPUT, a header
+# with the git commit of SOURCE_DIR and whether tracked files have
+# uncommitted changes, and rewrites it only when that changed, so that only
+# source/base/version.cc is compiled again after a commit.
+set(revision "unknown")
+set(local_changes "false")
+find_package(Git QUIET)
+if(GIT_FOUND)
+  execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR} rev-parse --short=12 HEAD
+    OUTPUT_VARIABLE head OUTPUT_STRIP_TRAILING_WHITESPACE
+    RESULT_VARIABLE head_result ERROR_QUIET)
+  if(head_result EQUAL 0 AND NOT head STREQUAL "")
+    set(revision "${head}")
+    execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR} status --porcelain --untracked-files=no
+      OUTPUT_VARIABLE status OUTPUT_STRIP_TRAILING_WHITESPACE
+      RESULT_VARIABLE status_result ERROR_QUIET)
+    if(status_result EQUAL 0 AND NOT status STREQUAL "")
+      set(local_changes "true")
+    endif()
+  endif()
+endif()
+file(WRITE ${OUTPUT}.new
+  "// Written by cmake/revision.cmake at build time.\n"
+  "#pragma once\n"
+  "#define UNILATERAL_GIT_REVISION \"${revision}\"\n"
+  "#define UNILATERAL_GIT_LOCAL_CHANGES ${local_changes}\n")
+configure_file(${OUTPUT}.new ${OUTPUT} COPYONLY)
+file(REMOVE ${OUTPUT}.new)
