@@ -36,6 +36,16 @@ namespace application_test
     std::ofstream(file_name) << text;
   }
 
+  /// The whole text of a file ("" if it cannot be read).
+  inline std::string
+  read(const std::string &file_name)
+  {
+    std::ifstream      in(file_name);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
   /// `unilateral arguments...` through run_application.
   inline Result
   run(const std::vector<std::string> &arguments,

@@ -23,15 +23,6 @@ using namespace application_test;
 
 namespace
 {
-  std::string
-  read(const std::filesystem::path &path)
-  {
-    std::ifstream      in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   /// The number after "key": in the summary (NaN if absent).
   double
   number(const std::string &json, const std::string &key)

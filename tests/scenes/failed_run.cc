@@ -16,15 +16,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-  std::string
-  read(const std::string &file_name)
-  {
-    std::ifstream      in(file_name);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   Result
   run_prm(const std::string &name, const std::string &text)
   {

@@ -11,15 +11,6 @@ using namespace application_test;
 
 namespace
 {
-  std::string
-  read(const std::string &file_name)
-  {
-    std::ifstream      in(file_name);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   const std::string output = "subsection Output\n  set Directory = results\n"
                              "  set Write VTU = false\n"
                              "  set Print timings = false\n"
@@ -47,16 +38,19 @@ main()
                run({"--version", "extra"}),
                {"'extra'", "--version"});
 
-  const std::string recorded = "\"git_revision\": \"" + revision + "\"";
+  const auto records_commit = [&revision](const std::string &run_name) {
+    const std::string recorded = "\"git_revision\": \"" + revision + "\"";
+    return yes_no(
+      !revision.empty() &&
+      read("results/" + run_name + "/summary.json").find(recorded) !=
+        std::string::npos);
+  };
   write("converged.prm",
         "subsection Masonry\n  set Blocks per side = 2\nend\n" + output);
   const Result converged = run({"converged.prm"});
   std::cout << "a run: exit code 0: " << yes_no(converged.code == 0)
             << ", summary.json records the commit: "
-            << yes_no(!revision.empty() &&
-                      read("results/converged/summary.json").find(recorded) !=
-                        std::string::npos)
-            << "\n";
+            << records_commit("converged") << "\n";
 
   // A run that fails after its folder was made (a missing matrix file).
   write("b.txt", "1\n");
@@ -69,8 +63,5 @@ main()
   const Result failed = run({"failed.prm"});
   std::cout << "a failed run: exit code 1: " << yes_no(failed.code == 1)
             << ", its summary.json records the commit: "
-            << yes_no(!revision.empty() &&
-                      read("results/failed/summary.json").find(recorded) !=
-                        std::string::npos)
-            << "\n";
+            << records_commit("failed") << "\n";
 }
