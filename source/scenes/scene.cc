@@ -38,11 +38,10 @@ namespace unilateral
   {
     /**
      * The keys every summary.json has: scene, run_name, version (the
-     * commit built), solver, n_unknowns,
-     * n_constraints, n_active, iterations, converged, status, message, kkt,
-     * energy, time (per stage of the pipeline and per solver phase), calls
-     * (how often each stage ran; solver phases that ran count 1) and
-     * counters (the solver's work).
+     * commit built), solver, n_unknowns, n_constraints, n_active,
+     * iterations, converged, status, message, kkt, energy, time (per stage
+     * of the pipeline and per solver phase), calls (how often each stage
+     * ran; solver phases that ran count 1) and counters (the solver's work).
      */
     JsonObject
     summary_base(const RunContext   &context,
