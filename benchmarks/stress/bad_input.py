@@ -225,6 +225,11 @@ def define_cases():
          args=["--help", "masonry.prm"], fragments=["unexpected argument"])
     case("cli", "-h with an extra argument", "error", args=["-h", "x"],
          fragments=["unexpected argument"])
+    case("cli", "--version", "valid", args=["--version"],
+         check=lambda run: (run["stdout"].startswith("unilateral, git "),
+                            "the commit built on stdout"))
+    case("cli", "--version with an extra argument", "error",
+         args=["--version", "x"], fragments=["unexpected argument"])
     case("cli", "--print-parameters json", "valid",
          args=["--print-parameters", "json"], check=is_json)
     case("cli", "--print-parameters json with an extra argument (issue)",
