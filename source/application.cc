@@ -1,8 +1,8 @@
 #include <unilateral/application.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
+#include <unilateral/base/prefixed_lines.h>
 #include <unilateral/base/ranks.h>
-#include <unilateral/base/timestamped_stream.h>
 #include <unilateral/base/version.h>
 #include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/scene.h>
@@ -378,7 +378,7 @@ namespace unilateral
 
       // With timings on, each progress line says when it was written,
       // counted from the moment the timer's total starts.
-      TimestampedStream   timed_progress(out);
+      PrefixedLines       timed_progress(out, PrefixedLines::elapsed_seconds());
       dealii::TimerOutput timer(out,
                                 dealii::TimerOutput::never,
                                 dealii::TimerOutput::wall_times);

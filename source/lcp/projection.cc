@@ -1,10 +1,10 @@
+#include <unilateral/base/prefixed_lines.h>
 #include <unilateral/lcp/projection.h>
 
 #include <algorithm>
 #include <memory>
 #include <ostream>
 #include <sstream>
-#include <streambuf>
 #include <string>
 #include <utility>
 
@@ -34,49 +34,6 @@ namespace unilateral::lcp
 
   namespace
   {
-    /**
-     * The progress lines of the projection step, labelled after their
-     * indentation ("    projection: pdas iteration 1: ..."): the method's
-     * own lines would repeat those of the solve before it word for word.
-     */
-    class LabelledLines : public std::streambuf
-    {
-    public:
-      LabelledLines(std::ostream &out, std::string label)
-        : out(out)
-        , label(std::move(label))
-      {}
-
-    protected:
-      int
-      overflow(const int c) override
-      {
-        if (c == traits_type::eof())
-          return c;
-        if (at_line_start && c != ' ')
-          {
-            out << label;
-            at_line_start = false;
-          }
-        if (c == '\n')
-          at_line_start = true;
-        out.put(static_cast<char>(c));
-        return c;
-      }
-
-      int
-      sync() override
-      {
-        out.flush();
-        return 0;
-      }
-
-    private:
-      std::ostream     &out;
-      const std::string label;
-      bool              at_line_start = true;
-    };
-
     // The projection method alone on @p problem.
     Report
     run_projection_method(const Problem          &problem,
@@ -227,15 +184,14 @@ namespace unilateral::lcp
           Report                 &report,
           std::ostream           *progress)
   {
-    PhaseTimer                     timer(report, "projection");
-    std::unique_ptr<LabelledLines> labelled_buffer;
-    std::unique_ptr<std::ostream>  labelled;
+    PhaseTimer timer(report, "projection");
+    // Its progress lines labelled after their indentation ("    projection:
+    // pdas iteration 1: ..."): the method's own would repeat those of the
+    // solve before it word for word.
+    std::unique_ptr<PrefixedLines> labelled;
     if (progress != nullptr)
-      {
-        labelled_buffer =
-          std::make_unique<LabelledLines>(*progress, "projection: ");
-        labelled = std::make_unique<std::ostream>(labelled_buffer.get());
-      }
+      labelled = std::make_unique<PrefixedLines>(
+        *progress, [] { return std::string("projection: "); }, true);
     const double mean_diagonal = diagonal_scale(problem.A);
     const double last_eps      = 1e-14 * mean_diagonal;
     double       eps_k         = first_eps;
