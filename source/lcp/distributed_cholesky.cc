@@ -222,10 +222,21 @@ namespace unilateral::lcp
     ++counters.numeric_factorisations;
     MatFactorError error = MAT_FACTOR_NOERROR;
     check(MatFactorGetError(impl.factor, &error), "MatFactorGetError");
-    if (error == MAT_FACTOR_OUTMEMORY)
-      throw OutOfMemory("MUMPS ran out of memory in the factorisation of a "
-                        "system with " +
-                        std::to_string(A.rows()) + " unknowns");
+    // A zero pivot, structural or numerical, says that A is singular, which
+    // the caller handles. Any other failure of MUMPS (an internal error, a
+    // feature this build of MUMPS lacks) says nothing about A: reported as
+    // a singular system, it would send the method down a wrong path.
+    if (error == MAT_FACTOR_OUTMEMORY || error == MAT_FACTOR_OTHER)
+      {
+        const std::string step =
+          "the factorisation of a system with " + std::to_string(A.rows()) +
+          " unknowns (MUMPS's INFOG(1) = " + std::to_string(impl.infog(1)) +
+          ", INFOG(2) = " + std::to_string(impl.infog(2)) + ")";
+        if (error == MAT_FACTOR_OUTMEMORY)
+          throw OutOfMemory("MUMPS ran out of memory in " + step);
+        throw std::runtime_error("MUMPS failed in " + step +
+                                 "; its user's guide lists the codes");
+      }
     if (error != MAT_FACTOR_NOERROR)
       {
         // PETSc keeps MUMPS's error and returns at once from every later
