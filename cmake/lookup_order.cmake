@@ -22,7 +22,14 @@
 # program, started more slowly.
 function(unilateral_lookup_order variable)
   set(${variable} "" PARENT_SCOPE)
-  list(GET DEAL_II_LIBRARIES_RELEASE 0 _dealii)
+  # The deal.II library this build links (deal_ii_setup_target's choice):
+  # naming the other one would load both.
+  string(TOUPPER "${CMAKE_BUILD_TYPE}" _build_type)
+  if(_build_type STREQUAL "DEBUG")
+    list(GET DEAL_II_LIBRARIES_DEBUG 0 _dealii)
+  else()
+    list(GET DEAL_II_LIBRARIES_RELEASE 0 _dealii)
+  endif()
   find_program(UNILATERAL_LDD ldd)
   find_program(UNILATERAL_READELF NAMES readelf ${CMAKE_READELF})
   if(NOT UNILATERAL_LDD OR NOT UNILATERAL_READELF OR
