@@ -2,15 +2,15 @@
 # so that the dynamic loader's symbol lookups at start-up are short.
 #
 # At start-up the loader binds every symbolic relocation of every library
-# (vtables, typeinfo, addresses of functions and data: 330,000 lookups for
-# Debian's deal.II) by searching the libraries in load order until one
-# defines the symbol. In the order the linker gives (the executable's own
-# few libraries, then breadth first), a library such as OpenBLAS, gmsh or
-# OpenCASCADE finds its own symbols only after a hundred others: 41
-# libraries searched per lookup on average, 0.35 s before main() on this
-# project's machines, more than a small plate takes to solve. Loaded in
-# decreasing order of their symbolic relocations (most of which a library
-# resolves to itself), the same lookups search 13 libraries on average.
+# (vtables, typeinfo, addresses of functions and data) by searching the
+# libraries in load order until one defines the symbol. In the order the
+# linker gives (the executable's own few libraries, then breadth first), a
+# library such as OpenBLAS, gmsh or OpenCASCADE finds its own symbols only
+# after a hundred others, and start-up costs more than a small plate takes
+# to solve. Most of a library's symbolic relocations resolve to itself, so
+# loading the libraries in decreasing order of their counts shortens the
+# searches (figures: benchmarks/plate_multigrid/README.md, "Why 90 x 90
+# cannot reach 0.3 s").
 #
 # unilateral_lookup_order(<variable>) sets <variable> to link items that
 # name deal.II's libraries in that order, kept by --no-as-needed (the linker
