@@ -3,7 +3,6 @@
 
 #include <deal.II/base/quadrature.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
@@ -299,11 +298,16 @@ namespace unilateral::masonry
     const DofIndex                    n_dofs = dof_handler.n_dofs();
     ContactSet<dim>                   result;
 
-    // The nodes, numbered in the order of their first component's DOF.
+    // The nodes, numbered in the order of their first component's DOF, at
+    // the element's support points mapped into each cell: what
+    // DoFTools::map_dofs_to_support_points computes (the same FEValues),
+    // without the std::map of every DOF that it fills first.
     std::vector<dealii::Point<dim>> support_point(n_dofs);
-    dealii::DoFTools::map_dofs_to_support_points(mapping,
-                                                 dof_handler,
-                                                 support_point);
+    dealii::FEValues<dim>           support_values(mapping,
+                                         fe,
+                                         dealii::Quadrature<dim>(
+                                           fe.get_unit_support_points()),
+                                         dealii::update_quadrature_points);
     const unsigned int n_nodes_per_cell = fe.base_element(0).n_dofs_per_cell();
     std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
     {
@@ -314,11 +318,14 @@ namespace unilateral::masonry
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           cell->get_dof_indices(dofs);
+          support_values.reinit(cell);
           for (unsigned int k = 0; k < n_nodes_per_cell; ++k)
             {
-              const DofIndex x  = dofs[fe.component_to_system_index(0, k)];
-              first[x]          = 1;
-              block_of_first[x] = cell->material_id();
+              const unsigned int i = fe.component_to_system_index(0, k);
+              const DofIndex     x = dofs[i];
+              first[x]             = 1;
+              block_of_first[x]    = cell->material_id();
+              support_point[x]     = support_values.quadrature_point(i);
               for (unsigned int c = 0; c < dim; ++c)
                 dofs_of_first[x][c] = dofs[fe.component_to_system_index(c, k)];
             }
@@ -588,8 +595,10 @@ namespace unilateral::masonry
       dealii::Tensor<1, dim> normal; ///< out of the first node's block
       std::size_t            face_first, face_second;
     };
-    std::map<std::pair<unsigned int, unsigned int>,
-             std::vector<JointPairRecord>>
+    // Every (node pair, record) found, grouped by pair below (a sort, not a
+    // map: a large wall has hundreds of thousands of pairs).
+    std::vector<
+      std::pair<std::pair<unsigned int, unsigned int>, JointPairRecord>>
       joint_pairs;
     for (std::size_t k = 0; k < by_class.size(); ++k)
       {
@@ -726,8 +735,9 @@ namespace unilateral::masonry
                       const unsigned int upper =
                         a_is_lower ? static_cast<unsigned int>(partner) : node;
                       const auto key = std::minmax(lower, upper);
-                      joint_pairs[{key.first, key.second}].push_back(
-                        {key.first == lower ? n : -n, p.face, q.face});
+                      joint_pairs.push_back(
+                        {{key.first, key.second},
+                         {key.first == lower ? n : -n, p.face, q.face}});
                     }
                 };
                 match(fp, fq, polygon[*it], true);
@@ -745,11 +755,27 @@ namespace unilateral::masonry
       std::array<std::set<std::size_t>, 2> faces;
     };
     std::vector<JointRow> joints;
-    for (const auto &[pair, records] : joint_pairs)
+    // By pair, each pair's records in the order they were found.
+    std::stable_sort(joint_pairs.begin(),
+                     joint_pairs.end(),
+                     [](const auto &a, const auto &b) {
+                       return a.first < b.first;
+                     });
+    for (std::size_t first = 0, end = 0; first < joint_pairs.size();
+         first = end)
       {
+        const auto pair = joint_pairs[first].first;
+        for (end = first;
+             end < joint_pairs.size() && joint_pairs[end].first == pair;
+             ++end)
+          ;
+        const auto record =
+          [&](const std::size_t r) -> const JointPairRecord & {
+          return joint_pairs[first + r].second;
+        };
         NormalGroups<dim> groups;
-        for (std::size_t r = 0; r < records.size(); ++r)
-          groups.add(records[r].normal, r);
+        for (std::size_t r = 0; r < end - first; ++r)
+          groups.add(record(r).normal, r);
         for (const auto &group : groups.groups)
           {
             std::array<double, dim> n     = group.mean();
@@ -778,29 +804,37 @@ namespace unilateral::masonry
             JointRow joint{{ConstraintKind::joint, lower, upper, n, 0.0}, {}};
             for (const std::size_t r : group.items)
               for (const std::size_t f :
-                   {records[r].face_first, records[r].face_second})
+                   {record(r).face_first, record(r).face_second})
                 joint.faces[faces[f].block == result.node_block[lower] ? 0 : 1]
                   .insert(f);
             joints.push_back(std::move(joint));
           }
       }
-    std::stable_sort(
-      joints.begin(), joints.end(), [&](const JointRow &a, const JointRow &b) {
-        const unsigned int ca = main_component(a.row.normal);
-        const unsigned int cb = main_component(b.row.normal);
-        const auto ka = std::make_pair(result.node_dofs[a.row.lower][ca],
-                                       result.node_dofs[a.row.upper][ca]);
-        const auto kb = std::make_pair(result.node_dofs[b.row.lower][cb],
-                                       result.node_dofs[b.row.upper][cb]);
-        return ka < kb;
-      });
-    for (const JointRow &joint : joints)
+    // In the DOF order of their rows: the keys computed once and the
+    // indices sorted, rather than the rows moved about with their sets.
+    std::vector<std::pair<DofIndex, DofIndex>> joint_key(joints.size());
+    for (std::size_t j = 0; j < joints.size(); ++j)
       {
+        const UnilateralConstraint<dim> &row = joints[j].row;
+        const unsigned int               c   = main_component(row.normal);
+        joint_key[j]                         = {result.node_dofs[row.lower][c],
+                                                result.node_dofs[row.upper][c]};
+      }
+    std::vector<std::size_t> joint_order(joints.size());
+    std::iota(joint_order.begin(), joint_order.end(), 0);
+    std::stable_sort(joint_order.begin(),
+                     joint_order.end(),
+                     [&](const std::size_t a, const std::size_t b) {
+                       return joint_key[a] < joint_key[b];
+                     });
+    for (const std::size_t j : joint_order)
+      {
+        JointRow &joint = joints[j];
         result.constraints.push_back(joint.row);
         result.position.push_back(result.node_position[joint.row.lower]);
         result.blocks.push_back({{result.node_block[joint.row.lower],
                                   result.node_block[joint.row.upper]}});
-        constraint_faces.push_back(joint.faces);
+        constraint_faces.push_back(std::move(joint.faces));
         const auto  &n        = joint.row.normal;
         const double vertical = std::abs(n[1]);
         if (vertical > 1 - 1e-12)
