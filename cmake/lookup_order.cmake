@@ -17,9 +17,10 @@
 # would otherwise drop those the executable does not call directly). The
 # counts come from each library's dynamic section (DT_RELASZ minus
 # DT_RELACOUNT: its non-relative relocations, without the lazily bound PLT
-# slots). Where ldd or readelf is missing, or deal.II is not a shared
-# library, <variable> is empty and the linker's order stays: the same
-# program, started more slowly.
+# slots). A symbol that several libraries define (BLAS's, LAPACK's) binds
+# to the first in this order. Where ldd or readelf is missing, or deal.II is
+# not a shared library, <variable> is empty and the linker's order stays:
+# the same program, started more slowly.
 function(unilateral_lookup_order variable)
   set(${variable} "" PARENT_SCOPE)
   # The deal.II library this build links (deal_ii_setup_target's choice):
