@@ -1,14 +1,16 @@
 // Every masonry example in prm/ runs as shipped (its mesh from prm/meshes,
 // its output redirected here) and its support reactions balance the loads
-// it applies, force and moment, to 1e-10 of the total load (issue 23's
+// it applies, force and moment, to 1e-9 of the total load (issue 23's
 // statics check). The reactions are the residual K u - f at the supported
 // nodes, the loads integrated separately: they balance only if the answer
-// is in equilibrium. One example misses 1e-10 and is expected to: the
-// paper's wall (prm/masonry.prm, m = 20) balances its forces to 1.2e-10,
-// its moments to 2.6e-11; its blocks settle as bodies by g = H/2, 250
-// times their elastic displacement, and the LCP's residual (3.6e-16 of
-// |A| |u|) is then 1e-10 of the self-weight (the limit of double precision
-// for this conditioning, not of the solver: its KKT test passes).
+// is in equilibrium. Why 1e-9 and not 1e-10: the paper's wall
+// (prm/masonry.prm, m = 20) balances its forces to 1.2e-10, its moments to
+// 2.6e-11; its blocks settle as bodies by g = H/2, 250 times their elastic
+// displacement, and the LCP's residual (3.6e-16 of |A| |u|) is then 1e-10
+// of the self-weight (the limit of double precision for this conditioning,
+// not of the solver: its KKT test passes). The other examples balance to
+// 1e-11 or better. A bound every example meets, so that the expected
+// output holds no failed verdict that a regression could hide behind.
 #include "../application_test_tools.h"
 
 #include <algorithm>
@@ -76,8 +78,8 @@ main()
                 << ", " << text(summary, "status") << ", "
                 << number(summary, "dimension") << "D, "
                 << number(summary, "n_blocks") << " blocks, balance of "
-                << "forces <= 1e-10: " << yes_no(force <= 1e-10)
-                << ", of moments <= 1e-10: " << yes_no(moment <= 1e-10) << "\n";
+                << "forces <= 1e-9: " << yes_no(force <= 1e-9)
+                << ", of moments <= 1e-9: " << yes_no(moment <= 1e-9) << "\n";
       if (result.code != 0)
         std::cout << result.err;
     }
