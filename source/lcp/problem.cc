@@ -78,7 +78,7 @@ namespace unilateral::lcp
              std::to_string(problem.lower_bound.size()) + " lower bounds");
     }
 
-    // b finite, S within 1..n, bounds finite or -infinity.
+    // b finite, S within 1..n, bounds finite.
     void
     check_b_and_bounds(const Problem &problem)
     {
@@ -93,10 +93,12 @@ namespace unilateral::lcp
           if (i < 0 || i >= n)
             fail("constrained index " + std::to_string(i + 1) +
                  " is outside 1.." + std::to_string(n) + " (counted from 1)");
-          if (std::isnan(problem.lower_bound[k]) ||
-              problem.lower_bound[k] == std::numeric_limits<double>::infinity())
+          // -infinity too: the answer checks scale by |l| (an index
+          // without a bound belongs outside S).
+          if (!std::isfinite(problem.lower_bound[k]))
             fail("lower bound of index " + std::to_string(i + 1) +
-                 " (counted from 1) is not a number or +infinity");
+                 " (counted from 1) is not a finite number (an unbounded "
+                 "index belongs outside S)");
         }
     }
 
@@ -239,6 +241,15 @@ namespace unilateral::lcp
     check_and_complete_diagonal(problem);
   }
 
+  void
+  clamp_rounded_diagonal(DenseMatrix &schur, const Vector &original_diagonal)
+  {
+    for (Index j = 0; j < schur.rows(); ++j)
+      if (schur(j, j) < 0 &&
+          schur(j, j) >= -1e-10 * std::abs(original_diagonal[j]))
+        schur(j, j) = 0;
+  }
+
   std::vector<Index>
   diagonal_positions(const SparseMatrix &A)
   {
@@ -282,8 +293,15 @@ namespace unilateral::lcp
   double
   KktResiduals::max() const
   {
-    return std::max(
-      {stationarity, primal_feasibility, dual_feasibility, complementarity});
+    // NaN-aware: std::max would drop a NaN that is not its first argument.
+    double largest = 0;
+    for (const double residual :
+         {stationarity, primal_feasibility, dual_feasibility, complementarity})
+      if (std::isnan(residual))
+        return residual;
+      else
+        largest = std::max(largest, residual);
+    return largest;
   }
 
   KktResiduals
@@ -291,6 +309,14 @@ namespace unilateral::lcp
   {
     const Index  n      = problem.size();
     const Vector lambda = problem.A * u - problem.b;
+    // A non-finite answer has no residual: infinity in each, so that every
+    // test "residual <= tolerance" fails (a NaN would pass the std::max
+    // below unseen).
+    if (!u.allFinite() || !lambda.allFinite())
+      {
+        const double infinite = std::numeric_limits<double>::infinity();
+        return {infinite, infinite, infinite, infinite};
+      }
 
     // |A| |u|: the size of the terms that cancel in A u.
     Vector abs_product = Vector::Zero(n);
@@ -300,11 +326,12 @@ namespace unilateral::lcp
 
     double force_scale = problem.b.lpNorm<Eigen::Infinity>() +
                          (n > 0 ? abs_product.lpNorm<Eigen::Infinity>() : 0.0);
-    double displacement_scale =
-      (n > 0 ? u.lpNorm<Eigen::Infinity>() : 0.0) +
-      (problem.n_constrained() > 0 ?
-         problem.lower_bound.lpNorm<Eigen::Infinity>() :
-         0.0);
+    // A bound's penetration relative to |u|, not to |u| + |l|: one far
+    // bound (an obstacle that nothing reaches) would hide any penetration
+    // of the others. |l| only where u = 0.
+    double displacement_scale = n > 0 ? u.lpNorm<Eigen::Infinity>() : 0.0;
+    if (displacement_scale == 0 && problem.n_constrained() > 0)
+      displacement_scale = problem.lower_bound.lpNorm<Eigen::Infinity>();
     if (force_scale == 0)
       force_scale = 1;
     if (displacement_scale == 0)

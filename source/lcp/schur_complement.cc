@@ -52,8 +52,16 @@ namespace unilateral::lcp
           for (Index i = 0; i < n_c; ++i)
             dense(i, first + k) = AX(problem.constrained[i], k);
       }
-    // Symmetrise away round-off so the reduced problem passes the checks.
+    // Symmetrise away round-off so the reduced problem passes the checks,
+    // and clamp what round-off made of a vanishing diagonal.
     dense = 0.5 * (dense + dense.transpose()).eval();
+    {
+      Vector original_diagonal(n_c);
+      for (Index k = 0; k < n_c; ++k)
+        original_diagonal[k] =
+          problem.A.coeff(problem.constrained[k], problem.constrained[k]);
+      clamp_rounded_diagonal(dense, original_diagonal);
+    }
 
     reduced.A = dense.sparseView(0.0, 0.0);
     // sparseView drops exact zeros; keep the diagonal in the pattern.

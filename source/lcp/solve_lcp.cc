@@ -115,10 +115,13 @@ namespace unilateral::lcp
                          ": use 'Schur complement = true' (" + info.name +
                          " works on S only) or a sparse method");
       if (info.needs_tearing && problem.tearing == nullptr)
-        throw InputError("method '" + info.name +
-                         "' works on a problem torn into subdomains, which "
-                         "this scene does not build (the masonry scene "
-                         "does): choose another method");
+        throw InputError(
+          "method '" + info.name + "' works on a problem torn into subdomains" +
+          (attempt.parameters.schur_complement ?
+             std::string(", not on the Schur complement on the constrained "
+                         "unknowns: set 'Solver/Schur complement = false'") :
+             std::string(", which this scene does not build (the masonry "
+                         "scene does): choose another method")));
       if (info.needs_hierarchy && problem.hierarchy == nullptr)
         throw InputError("method '" + info.name +
                          "' works on a hierarchy of meshes, which this "
@@ -270,13 +273,14 @@ namespace unilateral::lcp
           report.message = message.str();
         }
       // An exact method on A itself needs no projection, unless its answer
-      // fails the KKT check: pivoting methods with an absolute tolerance
+      // fails the final checks: pivoting methods with an absolute tolerance
       // (block pivoting's 1e-6) can stop a few indices short on large
-      // plates.
+      // plates, or a contact short where a far bound hides it from the
+      // relative residuals.
       const bool exact_answer =
         info.exact && !regularise && report.converged() &&
         solution.u.size() == problem.size() &&
-        kkt_residuals(problem, solution.u).max() <= parameters.kkt_tolerance;
+        passes_checks(problem, parameters.kkt_tolerance, solution.u);
       if (!report.converged() || !parameters.projection || exact_answer)
         return outcome;
 
@@ -462,8 +466,8 @@ namespace unilateral::lcp
         run_attempts(problem, check_attempt, check, progress);
       report.counters += check_report.counters;
       report.add_times(check_report, "verification: ");
-      if (check_report.converged() && kkt_residuals(problem, check.u).max() <=
-                                        attempt.parameters.kkt_tolerance)
+      if (check_report.converged() &&
+          passes_checks(problem, attempt.parameters.kkt_tolerance, check.u))
         {
           report.message += "; but " + label + " solved it in " +
                             quantity(check_report.iterations +
@@ -573,10 +577,14 @@ namespace unilateral::lcp
   {
     if (problem.known_semidefinite || problem.size() == 0)
       return;
-    const double shift   = semidefinite_shift * diagonal_scale(problem.A);
+    // Each row shifted by its own diagonal (floored far below the mean):
+    // a shift by the mean diagonal would hide an indefinite block of small
+    // entries beside a stiff one.
+    const double floor   = 1e-12 * diagonal_scale(problem.A);
     SparseMatrix shifted = problem.A;
     for (Index j = 0; j < problem.size(); ++j)
-      shifted.coeffRef(j, j) += shift;
+      shifted.coeffRef(j, j) +=
+        semidefinite_shift * std::max(problem.A.coeff(j, j), floor);
     SparseCholesky cholesky;
     Counters       counters;
     if (!cholesky.factorise(shifted, counters))
@@ -586,9 +594,9 @@ namespace unilateral::lcp
                 << "A is not positive semidefinite: the Cholesky "
                    "factorisation of A + "
                 << semidefinite_shift
-                << " d I (d the mean of its diagonal) meets a non-positive "
-                   "pivot, so A has an eigenvalue below -"
-                << shift
+                << " D (D the diagonal of A) meets a non-positive pivot, so "
+                   "D^-1/2 A D^-1/2 has an eigenvalue below -"
+                << semidefinite_shift
                 << "; the LCP methods need a symmetric positive semidefinite "
                    "A (an energy bounded from below)";
         throw InputError(message.str());

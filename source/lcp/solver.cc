@@ -306,6 +306,12 @@ namespace unilateral::lcp
                         eps,
                         "must be >= 0 (eps < 0 would make A + eps I "
                         "indefinite)");
+        check_parameter(std::isfinite(regularisation),
+                        "Solver",
+                        "Regularisation",
+                        eps,
+                        "must be a finite number (an infinite eps leaves "
+                        "nothing of A); 'auto' chooses it");
       }
     projection     = prm.get_bool("Projection");
     max_iterations = prm.get_integer("Maximum iterations");

@@ -20,6 +20,15 @@ namespace unilateral::lcp
                 Report        &report);
 
   /**
+   * Whether @p u would pass assess_answer as converged: for the decisions
+   * taken before the final judgement (whether an exact method's answer
+   * needs the projection, whether a verifying method's answer replaces the
+   * first), so that they apply the same checks as the final one.
+   */
+  bool
+  passes_checks(const Problem &problem, double kkt_tolerance, const Vector &u);
+
+  /**
    * @name The checks of assess_answer
    * Each leaves a report that is not 'converged' as it is.
    */
@@ -56,16 +65,20 @@ namespace unilateral::lcp
 
   /**
    * The forces of the answer balance the loads, measured against the loads:
-   * with F = max(|b|_inf, |lambda_S|_inf), the residual of stationarity
-   * and of dual feasibility must be at most @p kkt_tolerance F; and double
+   * with F = max(|b|_inf, |lambda_S|_inf), the residuals of stationarity,
+   * of dual feasibility, and in force units (times A_ii) of
+   * complementarity, must be at most @p kkt_tolerance F (a large motion
+   * elsewhere hides a force on an open contact from the relative KKT
+   * residual); and double
    * precision must resolve the forces that finely: the rounding error of
    * A u, epsilon |A| |u|_inf, must be at most @p kkt_tolerance F too (it
    * bounds the accuracy of the contact forces and of the energy). Both
    * catch what the relative KKT residuals (measured against |A| |u|) miss
    * where the displacements are mostly rigid motions far larger than the
    * elastic ones: blocks that settle by a gap a billion times their elastic
-   * deformation, or that hang in the air held by round-off. Without loads (b =
-   * 0) there is nothing to balance and the check passes.
+   * deformation, or that hang in the air held by round-off. Without loads
+   * and with contact forces at the round-off of A u there is nothing to
+   * balance and the check passes.
    */
   void
   check_balance(const Problem  &problem,

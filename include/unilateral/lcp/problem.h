@@ -119,6 +119,21 @@ namespace unilateral::lcp
   void
   check_and_normalise(Problem &problem);
 
+  /**
+   * Set to zero the diagonal entries of @p schur, a Schur complement
+   * A_UU - A_UF A_FF^-1 A_FU formed by the solver layer itself, that are
+   * negative by no more than 1e-10 times the diagonal of A they came from
+   * (@p original_diagonal, entry by entry): A is semidefinite (verified to
+   * that tolerance), so the complement is, and its diagonal vanishes
+   * exactly where releasing an index leaves a body free, where
+   * cancellation leaves it a few ulps either side of zero. Not for the
+   * user's data: check_and_normalise refuses a negative diagonal there,
+   * and here, after this, it would refuse only a complement that is not
+   * semidefinite beyond round-off.
+   */
+  void
+  clamp_rounded_diagonal(DenseMatrix &schur, const Vector &original_diagonal);
+
   /// Where each diagonal entry of @p A sits in its value array (A
   /// compressed, every diagonal entry stored: what check_and_normalise()
   /// makes of a Problem's A); std::logic_error otherwise.

@@ -35,17 +35,18 @@ namespace unilateral::lcp
    */
   /**
    * Throws InputError unless A is positive semidefinite (up to
-   * semidefinite_shift of its mean diagonal), which every method assumes:
+   * semidefinite_shift of each row's diagonal), which every method assumes:
    * on an indefinite A they return points that solve nothing (a saddle).
-   * One Cholesky factorisation of A + shift d I; none where the builder
-   * vouches for A (Problem::known_semidefinite).
+   * One Cholesky factorisation of A + shift D, D the diagonal of A (so the
+   * test does not depend on the units of each unknown); none where the
+   * builder vouches for A (Problem::known_semidefinite).
    */
   void
   verify_semidefinite(const Problem &problem);
 
-  /// The shift of verify_semidefinite, relative to the mean diagonal: below
-  /// the regularisation the methods add, so that what they take for
-  /// semidefinite passes.
+  /// The shift of verify_semidefinite, relative to each row's diagonal:
+  /// round-off's share of a semidefinite A, far below any eigenvalue of an
+  /// indefinite one.
   constexpr double semidefinite_shift = 1e-10;
 
   Report

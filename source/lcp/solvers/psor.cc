@@ -115,10 +115,10 @@ namespace unilateral::lcp
         for (const Index i : problem.constrained)
           if (!(diagonal[i] > 0))
             {
-              report.status  = Status::singular;
-              report.message = "PSOR needs A_ii > 0 on S, but A(" +
-                               std::to_string(i) + "," + std::to_string(i) +
-                               ") <= 0";
+              report.status = Status::singular;
+              report.message =
+                "PSOR needs A_ii > 0 on S, but A(" + std::to_string(i + 1) +
+                "," + std::to_string(i + 1) + ") <= 0 (counted from 1)";
               return;
             }
 
