@@ -61,7 +61,8 @@ namespace
  * no restart (`mpirun -x GLIBC_TUNABLES=glibc.malloc.hugetlb=1` gives every
  * rank huge pages). Ranks sharing a machine run one BLAS thread each.
  * Every rank reads the same file and fails alike on bad input; rank 0
- * alone prints and writes.
+ * alone prints and writes. A failure during the run (after the file is
+ * read) ends every rank through MPI_Abort, as it may be one rank's alone.
  */
 int
 main(int argc, char **argv)
@@ -73,11 +74,27 @@ main(int argc, char **argv)
       });
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   unilateral::blas::one_thread_per_rank(MPI_COMM_WORLD);
-  const bool speaks =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const unsigned int rank =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const unsigned int ranks =
+    dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  const bool    speaks = rank == 0;
   std::ofstream nowhere; // never opened: what is written to it is dropped
+  // A run that fails on one rank may leave the others waiting in a
+  // collective call for ever: the failing rank says why (whichever it is)
+  // and ends them all, with the run's exit code.
+  const auto end_every_rank = [rank, ranks](const std::string &message,
+                                            const int          code) {
+    if (ranks == 1)
+      return;
+    std::cerr << "unilateral (rank " << rank << " of " << ranks
+              << "): " << message << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, code);
+  };
   return unilateral::run_application(argc,
                                      argv,
                                      speaks ? std::cout : nowhere,
-                                     speaks ? std::cerr : nowhere);
+                                     speaks ? std::cerr : nowhere,
+                                     {},
+                                     end_every_rank);
 }

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <system_error>
 
 namespace unilateral
 {
@@ -37,7 +38,18 @@ namespace unilateral
       "FILE are taken from FILE's folder): summary.json, a copy of FILE.prm,\n"
       "and VTU/PVD files for ParaView. Exit code: 0 converged, 1 bad input\n"
       "(or a problem too large for the memory), 2 the solver did not\n"
-      "converge (its status is in summary.json).\n";
+      "converge (its status is in summary.json), 3 an internal error (a\n"
+      "defect of the program or a failure of a library it calls, not of\n"
+      "the input: please report it with the parameter file).\n";
+
+    /// A run that failed for a reason not in its input: a consistency check
+    /// of the program (std::logic_error) or a failure a library reported
+    /// (CHOLMOD, MUMPS, PETSc, MPI). Exit code 3.
+    class InternalError : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
 
     // The default scene: the masonry wall, the program's first use.
     std::string
@@ -306,10 +318,11 @@ namespace unilateral
     }
 
     int
-    run(const std::string           &parameter_file,
-        std::ostream                &out,
-        const std::function<void()> &before_large_run,
-        std::string                 &failure_line)
+    run(const std::string                                   &parameter_file,
+        std::ostream                                        &out,
+        const std::function<void()>                         &before_large_run,
+        const std::function<void(const std::string &, int)> &after_failed_run,
+        std::string                                         &failure_line)
     {
       if (std::filesystem::is_directory(parameter_file))
         throw InputError("cannot read parameter file '" + parameter_file +
@@ -398,6 +411,7 @@ namespace unilateral
           << context.run_name << "'" << std::endl;
       lcp::Report report;
       std::string failure;
+      bool        internal = false;
       try
         {
           report = scene->run(context);
@@ -412,14 +426,47 @@ namespace unilateral
                     memory::format(memory::available()) + " left); " +
                     memory_fix(*scene);
         }
+      catch (const InputError &error)
+        {
+          failure = one_line_message(error);
+        }
+      // Files and folders the system refused (permissions, a full disk):
+      // the user's to fix, as a bad input.
+      catch (const std::system_error &error)
+        {
+          failure = one_line_message(error);
+        }
+      // Not the input: a check of the program's own consistency, or a
+      // library's failure (CHOLMOD, MUMPS, PETSc and MPI report theirs as
+      // runtime errors). Input the libraries refuse (deal.II's mesh
+      // readers) arrives as neither, and stays a bad input.
+      catch (const std::logic_error &error)
+        {
+          failure  = one_line_message(error);
+          internal = true;
+        }
+      catch (const std::runtime_error &error)
+        {
+          failure  = one_line_message(error);
+          internal = true;
+        }
       catch (const std::exception &error)
         {
           failure = one_line_message(error);
         }
       if (!failure.empty())
         {
+          if (internal)
+            failure = "internal error (" + failure +
+                      "): not a fault of the input; please report it with "
+                      "the parameter file";
           if (context.writes_files)
             write_error_summary(context, scene_info.name, failure);
+          if (after_failed_run)
+            after_failed_run(internal ? failure : "error: " + failure,
+                             internal ? 3 : 1);
+          if (internal)
+            throw InternalError(failure);
           throw InputError(failure);
         }
       out << "  results in " << shown(context.output_directory) << "/"
@@ -433,11 +480,13 @@ namespace unilateral
   } // namespace
 
   int
-  run_application(int                          argc,
-                  char                       **argv,
-                  std::ostream                &out,
-                  std::ostream                &err,
-                  const std::function<void()> &before_large_run)
+  run_application(
+    int                                                  argc,
+    char                                               **argv,
+    std::ostream                                        &out,
+    std::ostream                                        &err,
+    const std::function<void()>                         &before_large_run,
+    const std::function<void(const std::string &, int)> &after_failed_run)
   {
     try
       {
@@ -476,13 +525,20 @@ namespace unilateral
                            std::to_string(argc - 1) +
                            " arguments; see unilateral --help");
         std::string failure_line;
-        const int   code = run(first, out, before_large_run, failure_line);
+        const int   code =
+          run(first, out, before_large_run, after_failed_run, failure_line);
         if (!failure_line.empty())
           {
             out.flush();
             err << "unilateral: " << failure_line << std::endl;
           }
         return code;
+      }
+    catch (const InternalError &error)
+      {
+        out.flush();
+        err << "unilateral: " << error.what() << std::endl;
+        return 3;
       }
     catch (const std::exception &exception)
       {
