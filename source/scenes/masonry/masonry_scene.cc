@@ -633,11 +633,33 @@ namespace unilateral::masonry
       .set("load_moment", list(balance.load_moment))
       .set("force_imbalance", balance.force_imbalance)
       .set("moment_imbalance", balance.moment_imbalance);
-    JsonObject &reactions = statics.object("reactions");
+    // Per boundary: the supports on one boundary (the built-in walls' base
+    // is a roller on one part and a Signorini support on the other) summed
+    // under its name, in the order the boundaries first appear.
+    std::vector<std::string>             boundaries;
+    std::vector<std::array<double, dim>> forces;
+    std::vector<std::array<double, 3>>   moments;
     for (std::size_t k = 0; k < balance.support.size(); ++k)
-      reactions.object(balance.support[k])
-        .set("force", list(balance.reaction[k]))
-        .set("moment", list(balance.reaction_moment[k]));
+      {
+        const auto found =
+          std::find(boundaries.begin(), boundaries.end(), balance.support[k]);
+        const size_t b = found - boundaries.begin();
+        if (found == boundaries.end())
+          {
+            boundaries.push_back(balance.support[k]);
+            forces.push_back({});
+            moments.push_back({});
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          forces[b][d] += balance.reaction[k][d];
+        for (unsigned int d = 0; d < 3; ++d)
+          moments[b][d] += balance.reaction_moment[k][d];
+      }
+    JsonObject &reactions = statics.object("reactions");
+    for (std::size_t b = 0; b < boundaries.size(); ++b)
+      reactions.object(boundaries[b])
+        .set("force", list(forces[b]))
+        .set("moment", list(moments[b]));
   }
 
   template <int dim>
