@@ -92,6 +92,8 @@ namespace unilateral
   void
   LcpScene::postprocess(const RunContext &context, lcp::Report &)
   {
+    if (!context.writes_files) // another rank writes them
+      return;
     const std::string directory = context.output_directory.string();
     lcp::write_vector(lcp_solution.u, directory + "/u.txt");
     lcp::write_vector(lcp_solution.lambda, directory + "/lambda.txt");
