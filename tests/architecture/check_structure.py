@@ -3,6 +3,8 @@
 
 Prints one verdict line per rule (and the offenders), exit code 1 if any
 rule fails:
+  - the method names are found, one for every registration (else the next
+    rule would hold vacuously);
   - no method name as a string literal outside source/lcp/solvers/ (the
     driver, the scenes and the application learn methods from the registry);
   - include/unilateral/ mirrors source/ one to one (a method's file under
@@ -47,11 +49,23 @@ def read(path):
 code = [p for folder in ("source", "include", "app")
         for p in files(folder, (".cc", ".h"))]
 
-# Method names, from the registrations.
+# Method names, from the registrations. The names come from a pattern
+# ('info.name = "..."'): if the registration style changed, no name would be
+# found and the rule below would hold vacuously. So the names found must be
+# as many as the registrations (UNILATERAL_REGISTER_SOLVER, one per method,
+# the list the 'Method' selection is made of at run time), and not none.
 solvers = "source/lcp/solvers/"
 names = set()
+registrations = 0
 for path in files(solvers, (".cc",)):
     names.update(re.findall(r'info\.name\s*=\s*"(\w+)"', read(path)))
+    registrations += len(re.findall(r"^\s*UNILATERAL_REGISTER_SOLVER\(\w+\)",
+                                    read(path), re.MULTILINE))
+verdict(f"method names found for every registration ({len(names)} names, "
+        f"{registrations} registrations)",
+        [] if names and len(names) == registrations else
+        [f"{len(names)} names by 'info.name = \"...\"' in {solvers}, "
+         f"{registrations} UNILATERAL_REGISTER_SOLVER lines"])
 literal = [f"{path}: \"{name}\"" for path in code
            if not path.startswith(solvers)
            for name in sorted(names) if f'"{name}"' in read(path)]
