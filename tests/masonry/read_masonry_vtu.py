@@ -11,7 +11,10 @@ Usage: read_masonry_vtu.py RUN_DIRECTORY patch|settle
           or nu/(1 - nu) (1 - y) (vertical joints only).
   settle: any run with gap g > 0: the settlement shows (min u_y <= -g),
           gaps and pressures are nonnegative, active nodes are closed, nodes
-          with pressure are active.
+          with pressure are active; and the contact fields are not empty:
+          some node is active, some pressure is > 0, the open joints show
+          (max normal gap >= g/2), and the active nodes agree with the size
+          of the active set in summary.json (n_active; see count_bounds).
 Both modes check the PVD record, the field names and sizes, the cell data
 and the agreement with summary.json.
 
@@ -30,6 +33,36 @@ from vtk.util.numpy_support import vtk_to_numpy
 
 def verdict(text, condition):
     print(f"{text}: {'yes' if condition else 'NO'}")
+
+
+def count_bounds(grid, active, block_id):
+    """Bounds on the number of constraints in the active set from the VTU's
+    active_set flags. The flags are per node, not per constraint, so their
+    count is not the number of closed contacts: a joint constraint flags
+    two nodes (one in each block) at the same position, a Signorini one a
+    single node, and at a running bond's T-junction three blocks meet, where
+    up to three constraints (two horizontal joint pairs and the vertical
+    joint) share one position (the settling wall of masonry_application:
+    active nodes at 33 positions, 41 constraints in the active set). With
+    k_p the number of blocks whose node at position p is active:
+      lower = sum_p ceil(k_p / 2)  (each constraint flags <= 2 nodes at p),
+      upper = sum_p (k_p (k_p - 1) / 2 + (k_p if p is on the base y = 0))
+              (one joint constraint per pair of blocks, one Signorini
+              constraint per base node).
+    Returns (number of positions, lower, upper)."""
+    blocks_at = {}
+    for cell in range(grid.GetNumberOfCells()):
+        ids = grid.GetCell(cell).GetPointIds()
+        for k in range(ids.GetNumberOfIds()):
+            i = ids.GetId(k)
+            if active[i] == 1:
+                x, y, z = grid.GetPoint(i)
+                position = (round(x, 7), round(y, 7), round(z, 7))
+                blocks_at.setdefault(position, set()).add(int(block_id[cell]))
+    lower = sum((len(b) + 1) // 2 for b in blocks_at.values())
+    upper = sum(len(b) * (len(b) - 1) // 2 + (len(b) if p[1] == 0 else 0)
+                for p, b in blocks_at.items())
+    return len(blocks_at), lower, upper
 
 
 def main():
@@ -83,7 +116,7 @@ def main():
             abs(largest - summary["max_displacement"]) <=
             1e-6 * summary["max_displacement"])
     for key in ("geometry", "m", "n_blocks", "refinement", "gap", "element",
-                "max_displacement", "n_closed_contacts"):
+                "max_displacement", "n_closed_contacts", "n_active"):
         if key not in summary:
             verdict(f"summary.json has '{key}'", False)
     active = fields["active_set"]
@@ -141,6 +174,19 @@ def main():
         verdict("nodes with pressure are active",
                 all(active[i] == 1 for i in range(n_points)
                     if pressure[i] > 1e-6 * max(pressure)))
+        # The checks above hold for all-zero fields; these do not.
+        verdict("some node is active and some contact pressure is > 0",
+                active.sum() > 0 and max(pressure) > 0)
+        verdict(f"the open joints show: max normal gap >= g/2 = {g / 2}",
+                max(gap) >= 0.5 * g)
+        positions, lower, upper = count_bounds(grid, active,
+                                               cells["block_id"])
+        n_active = summary["n_active"]
+        verdict(f"active nodes at {positions} positions: {lower} <= n_active "
+                f"= {n_active} <= {upper}, and n_active <= "
+                f"n_closed_contacts = {summary['n_closed_contacts']}",
+                0 < lower <= n_active <= upper and
+                n_active <= summary["n_closed_contacts"])
         verdict("both material classes present",
                 sorted(set(cells["material"].tolist())) == [0, 1])
 
