@@ -6,6 +6,9 @@
 // are refused, and a definite matrix factorises again after a refusal; and
 // SparseCholesky made inside a DistributedFactorisations scope, and only
 // there, factorises over the ranks, without what only CHOLMOD offers.
+// Every rank checks: a verdict holds only if it holds on every rank (each
+// rank's solutions against its own CHOLMOD solve), and every rank's
+// solutions must equal rank 0's (broadcast) to 1e-12 of the largest entry.
 // Rank 0 prints; the two outputs differ only in the number of ranks.
 #include <unilateral/lcp/distributed_cholesky.h>
 #include <unilateral/lcp/sparse_cholesky.h>
@@ -14,6 +17,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 using namespace unilateral::lcp;
@@ -74,9 +78,11 @@ namespace
     return B;
   }
 
-  /// Relative difference of the distributed and CHOLMOD's solutions.
-  double
-  difference(const DistributedCholesky &distributed, const SparseMatrix &A)
+  /// Verdicts on the distributed solutions of several right-hand sides,
+  /// over every rank: "as CHOLMOD's to 1e-12" (relative to CHOLMOD's on the
+  /// same rank) and "as rank 0's" (1e-12 of the largest entry).
+  std::string
+  solutions(const DistributedCholesky &distributed, const SparseMatrix &A)
   {
     const DenseMatrix B = right_hand_sides(A.rows());
     DenseMatrix       X, X_serial;
@@ -85,7 +91,12 @@ namespace
     Counters       counters;
     serial.factorise(A, counters);
     serial.solve(B, X_serial);
-    return (X - X_serial).norm() / X_serial.norm();
+    const bool as_cholmod = mpi_test::max_over_ranks((X - X_serial).norm() /
+                                                     X_serial.norm()) <= 1e-12;
+    const bool as_rank_0  = mpi_test::same_as_rank_0(
+      std::vector<double>(X.data(), X.data() + X.size()), 1e-12);
+    return std::string("solutions as CHOLMOD's to 1e-12: ") +
+           yes_no(as_cholmod) + ", as rank 0's: " + yes_no(as_rank_0);
   }
 } // namespace
 
@@ -95,44 +106,49 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   mpi_test::rank_0_prints();
 
+  using mpi_test::all_ranks;
   DistributedCholesky cholesky(MPI_COMM_WORLD);
   std::cout << "ranks: " << cholesky.n_ranks() << "\n";
   Counters           counters;
-  const SparseMatrix A          = laplacian(30, 1.0, 0.0);
-  const bool         factorised = cholesky.factorise(A, 1e-14, counters);
-  std::cout << "Laplacian 30 x 30: factorised: " << yes_no(factorised)
-            << ", solutions as CHOLMOD's to 1e-12: "
-            << yes_no(difference(cholesky, A) <= 1e-12)
-            << ", factor entries > 0: "
-            << yes_no(cholesky.factor_nonzeros() > 0) << "\n";
+  const SparseMatrix A    = laplacian(30, 1.0, 0.0);
+  const bool factorised   = all_ranks(cholesky.factorise(A, 1e-14, counters));
+  const std::string first = solutions(cholesky, A);
+  std::cout << "Laplacian 30 x 30: factorised: " << yes_no(factorised) << ", "
+            << first << ", factor entries > 0: "
+            << yes_no(all_ranks(cholesky.factor_nonzeros() > 0)) << "\n";
 
   const SparseMatrix A2    = laplacian(30, 2.0, 0.5);
-  const bool         again = cholesky.factorise(A2, 1e-14, counters);
-  std::cout << "same pattern, new values: factorised: " << yes_no(again)
-            << ", solutions as CHOLMOD's to 1e-12: "
-            << yes_no(difference(cholesky, A2) <= 1e-12)
-            << ", symbolic analyses: " << counters.symbolic_analyses
+  const bool         again = all_ranks(cholesky.factorise(A2, 1e-14, counters));
+  const std::string  second = solutions(cholesky, A2);
+  std::cout << "same pattern, new values: factorised: " << yes_no(again) << ", "
+            << second << ", symbolic analyses: " << counters.symbolic_analyses
             << ", numeric factorisations: " << counters.numeric_factorisations
-            << "\n";
+            << " (on every rank: "
+            << yes_no(all_ranks(counters.symbolic_analyses == 1 &&
+                                counters.numeric_factorisations == 2))
+            << ")\n";
 
   const bool singular =
     cholesky.factorise(laplacian(30, 1.0, 0.0, true), 1e-14, counters);
-  std::cout << "Neumann Laplacian (singular): refused: " << yes_no(!singular)
-            << ", no factor kept: " << yes_no(!cholesky.has_factor()) << "\n";
+  const bool refused_singular = all_ranks(!singular);
+  const bool no_factor        = all_ranks(!cholesky.has_factor());
+  std::cout << "Neumann Laplacian (singular): refused: "
+            << yes_no(refused_singular)
+            << ", no factor kept: " << yes_no(no_factor) << "\n";
   const bool indefinite =
     cholesky.factorise(laplacian(30, 1.0, -3.0), 0.0, counters);
-  std::cout << "Laplacian - 3 I (indefinite): refused: " << yes_no(!indefinite)
-            << "\n";
-  const bool after = cholesky.factorise(A, 1e-14, counters);
+  std::cout << "Laplacian - 3 I (indefinite): refused: "
+            << yes_no(all_ranks(!indefinite)) << "\n";
+  const bool        after = all_ranks(cholesky.factorise(A, 1e-14, counters));
+  const std::string third = solutions(cholesky, A);
   std::cout << "definite after the refusals: factorised: " << yes_no(after)
-            << ", solutions as CHOLMOD's to 1e-12: "
-            << yes_no(difference(cholesky, A) <= 1e-12) << "\n";
+            << ", " << third << "\n";
 
   // The scope: SparseCholesky inside it distributed, outside not.
   {
     SparseCholesky outside;
-    std::cout << "outside a scope: serial: " << yes_no(!outside.distributed())
-              << "\n";
+    std::cout << "outside a scope: serial: "
+              << yes_no(all_ranks(!outside.distributed())) << "\n";
     DistributedFactorisations scope(MPI_COMM_WORLD);
     SparseCholesky            inside;
     Counters                  inside_counters;
@@ -146,17 +162,22 @@ main(int argc, char **argv)
     columns.insert(3, 0)  = 1.0;
     columns.insert(40, 1) = 1.0;
     columns.makeCompressed();
-    std::cout << "inside a scope: distributed: " << yes_no(inside.distributed())
-              << ", solutions as CHOLMOD's "
-              << "to 1e-12: "
-              << yes_no((X - X_serial).norm() <= 1e-12 * X_serial.norm())
-              << ", inverse_gram declines: "
-              << yes_no(!inside.inverse_gram(columns, G))
+    const bool distributed = all_ranks(inside.distributed());
+    const bool as_cholmod =
+      all_ranks((X - X_serial).norm() <= 1e-12 * X_serial.norm());
+    const bool as_rank_0 = mpi_test::same_as_rank_0(
+      std::vector<double>(X.data(), X.data() + X.size()), 1e-12);
+    const bool declines = all_ranks(!inside.inverse_gram(columns, G));
+    const bool infinite =
+      all_ranks(std::isinf(inside.modification_path_entries({3})));
+    std::cout << "inside a scope: distributed: " << yes_no(distributed)
+              << ", solutions as CHOLMOD's to 1e-12: " << yes_no(as_cholmod)
+              << ", as rank 0's: " << yes_no(as_rank_0)
+              << ", inverse_gram declines: " << yes_no(declines)
               << ", row modifications cost infinitely much: "
-              << yes_no(std::isinf(inside.modification_path_entries({3})))
-              << "\n";
+              << yes_no(infinite) << "\n";
   }
   SparseCholesky after_scope;
   std::cout << "after the scope closed: serial: "
-            << yes_no(!after_scope.distributed()) << "\n";
+            << yes_no(all_ranks(!after_scope.distributed())) << "\n";
 }

@@ -5,8 +5,16 @@
 // (energy to 1e-10, the same closed contacts and forces, KKT <= 1e-10: the
 // verdicts of tfeti_test_tools.h), and PDAS takes the same iterations. The
 // walls: the paper's three at m = 5 and 10, one without gap (degenerate
-// contacts), and a 3D wall two blocks thick. Rank 0 prints; the two
-// outputs differ only in the number of ranks.
+// contacts), and a 3D wall two blocks thick. That the factorisations did
+// run over the ranks is read from each MUMPS run's report: its
+// 'factorisation_ranks' figure (set only where the distributed scope was
+// opened) is printed, 1 or 2, and the CHOLMOD reference must have none (a
+// silent fall-back to CHOLMOD would otherwise compare a computation with
+// itself). Every rank judges its own runs, a verdict holding only if it
+// holds on every rank, and every rank's nodal displacements must equal
+// rank 0's (broadcast) to 1e-12 of the largest: every rank gets the whole
+// MUMPS solution and writes its own blocks' output from it. Rank 0
+// prints; the two outputs differ only in the number of ranks.
 #include "../mpi_test_tools.h"
 #include "tfeti_test_tools.h"
 
@@ -14,6 +22,16 @@ using namespace tfeti_test;
 
 namespace
 {
+  /// The report's figure @p name, or -1 if it has none.
+  double
+  figure(const lcp::Report &report, const std::string &name)
+  {
+    for (const auto &[key, value] : report.figures)
+      if (key == name)
+        return value;
+    return -1;
+  }
+
   std::string
   factorisation(const std::string &choice)
   {
@@ -29,10 +47,15 @@ namespace
              const std::string &masonry,
              const std::string &name)
   {
+    using mpi_test::all_ranks;
     const RunOf<dim> reference =
       run<dim>(parse(masonry + prm_text(geometry, m, "pdas", boundary) +
                      factorisation("cholmod")),
                name);
+    std::cout << what << ", cholmod reference: no factorisation_ranks figure: "
+              << yes_no(all_ranks(
+                   figure(reference.report, "factorisation_ranks") < 0))
+              << "\n";
     for (const std::string method : {"pdas", "interior_point"})
       {
         const RunOf<dim> result =
@@ -40,10 +63,19 @@ namespace
                          factorisation("mumps")),
                    name);
         compare(what + ", " + method, reference, result, false);
+        const double ranks      = figure(result.report, "factorisation_ranks");
+        const bool   same_ranks = all_ranks(ranks == mpi_test::n_ranks());
+        const bool   same_u =
+          mpi_test::same_as_rank_0(displacements(*result.scene), 1e-12);
+        std::cout << "  factorisation_ranks = " << ranks
+                  << " (the number of ranks, on every rank: "
+                  << yes_no(same_ranks)
+                  << "), displacements as rank 0's on every rank (1e-12): "
+                  << yes_no(same_u) << "\n";
         if (method == "pdas")
           std::cout << "  pdas iterations as serial: "
-                    << yes_no(result.report.iterations ==
-                              reference.report.iterations)
+                    << yes_no(all_ranks(result.report.iterations ==
+                                        reference.report.iterations))
                     << "\n";
       }
   }

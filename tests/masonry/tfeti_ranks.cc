@@ -4,11 +4,28 @@
 // closed contacts, KKT <= 1e-10; the verdicts of tfeti_test_tools.h), so
 // that the answers on 1 and 2 ranks are the same. The number of ranks that
 // shared the subdomains is printed: the two outputs differ only there.
-// Rank 0 prints; every rank writes its runs into its own folder.
+// Every rank judges its own TFETI run against the PDAS run it made alone,
+// a verdict holding only if it holds on every rank, and every rank's
+// nodal displacements must equal rank 0's (broadcast) to 1e-12 of the
+// largest: TFETI gathers the whole u on every rank, which writes its own
+// blocks' output from it. Rank 0 prints; every rank writes its runs into
+// its own folder.
 #include "../mpi_test_tools.h"
 #include "tfeti_test_tools.h"
 
 using namespace tfeti_test;
+
+namespace
+{
+  void
+  same_on_every_rank(const Run &tfeti)
+  {
+    std::cout << "  displacements as rank 0's on every rank (1e-12): "
+              << yes_no(
+                   mpi_test::same_as_rank_0(displacements(*tfeti.scene), 1e-12))
+              << "\n";
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
@@ -25,10 +42,11 @@ main(int argc, char **argv)
         for (const auto &[figure, value] : tfeti.report.figures)
           if (figure == "ranks")
             std::cout << "  subdomains shared by " << value << " ranks\n";
+        same_on_every_rank(tfeti);
       }
-  against_pdas("stack bond, m = 10, g = 0",
-               "stack bond",
-               10,
-               "    set Relative gap = 0\n",
-               name);
+  same_on_every_rank(against_pdas("stack bond, m = 10, g = 0",
+                                  "stack bond",
+                                  10,
+                                  "    set Relative gap = 0\n",
+                                  name));
 }
