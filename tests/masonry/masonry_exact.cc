@@ -3,22 +3,122 @@
 //     through the thickness (collar joints between them), g = 0, rollers on
 //     the sides, front and back: every joint closes and the displacement is
 //     the confined column's, u_x = u_z = 0, u_y(y) = -gravity rho
-//     (y - y^2 / 2) / (lambda + 2 mu), to 1e-10, at every node; the collar
-//     joints carry sigma_zz = lambda tr(eps).
+//     (y - y^2 / 2) / (lambda + 2 mu), to 1e-10, at every node; and the
+//     contact forces between each pair of blocks sum to the exact stress
+//     integrated over their common face, to 1e-10: the collar joints carry
+//     sigma_zz = lambda tr(eps) = -lambda rho (1 - y) / (lambda + 2 mu), the
+//     vertical joints sigma_xx the same, the horizontal joints sigma_yy =
+//     -rho (1 - y) (the faces from the blocks' nodes, not from the scene).
 //  2. A block in a V-shaped groove of two frictionless supports inclined at
 //     +-theta (a kite whose lower faces lie on them, g = 0, in 2D and
 //     extruded in 3D with a roller on its front face): each support carries
 //     W / (2 cos theta) along its normal, to 1e-10, W the block's weight.
 #include "masonry_test_tools.h"
 
+#include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <sstream>
+#include <utility>
 
 using namespace masonry_test;
 
 namespace
 {
+  /**
+   * The joint forces of the confined column against the exact stresses,
+   * block pair by block pair: the forces of a pair's constraints sum to the
+   * normal stress integrated over the pair's common face, which is the
+   * overlap of the two blocks' bounding boxes (from their nodes). With
+   * gravity 1, sigma_yy = -rho (1 - y) and sigma_xx = sigma_zz = lambda
+   * eps_yy = -lambda rho (1 - y) / (lambda + 2 mu). Prints one verdict per
+   * joint direction (collar: normal z; vertical: x; horizontal: y).
+   */
+  void
+  joint_forces(const RunOf<3> &run, const MaterialClass &m)
+  {
+    using Box = std::array<std::array<double, 2>, 3>; // [axis][min, max]
+    std::map<unsigned int, Box> boxes;
+    for (const auto &node : run.scene->nodal_displacements())
+      {
+        auto found = boxes.find(node.block);
+        if (found == boxes.end())
+          {
+            Box box;
+            for (unsigned int d = 0; d < 3; ++d)
+              box[d] = {{node.position[d], node.position[d]}};
+            boxes[node.block] = box;
+          }
+        else
+          for (unsigned int d = 0; d < 3; ++d)
+            found->second[d] = {
+              {std::min(found->second[d][0], node.position[d]),
+               std::max(found->second[d][1], node.position[d])}};
+      }
+    // Summed force and the normal's axis (3: more than one) per pair.
+    std::map<std::pair<unsigned int, unsigned int>, std::pair<double, int>>
+      pairs;
+    for (const auto &c : run.scene->constraint_results())
+      if (c.kind == ConstraintKind::joint)
+        {
+          int axis = -1;
+          for (int d = 0; d < 3; ++d)
+            if (std::abs(std::abs(c.normal[d]) - 1) < 1e-12)
+              axis = d;
+          auto &pair = pairs[{c.blocks[0], c.blocks[1]}];
+          if (pair.second == 0 && pair.first == 0 && axis >= 0)
+            pair.second = axis + 1;
+          else if (pair.second != axis + 1)
+            pair.second = 4;
+          pair.first += c.contact_force;
+        }
+    const double ratio    = m.lambda() / (m.lambda() + 2 * m.mu());
+    const char  *names[3] = {"vertical (normal x)",
+                             "horizontal (normal y)",
+                             "collar (normal z)"};
+    for (int axis : {2, 0, 1})
+      {
+        unsigned int n_pairs = 0;
+        bool         right   = true;
+        for (const auto &[blocks, pair] : pairs)
+          {
+            if (pair.second == 4 || pair.second == 0)
+              right = false;
+            if (pair.second != axis + 1)
+              continue;
+            ++n_pairs;
+            const Box &a = boxes.at(blocks.first), &b = boxes.at(blocks.second);
+            std::array<double, 3> low, high;
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                low[d]  = std::max(a[d][0], b[d][0]);
+                high[d] = std::min(a[d][1], b[d][1]);
+              }
+            double exact;
+            if (axis == 1) // sigma_yy at the joint's height, times its area
+              exact = m.density * (1 - low[1]) * (high[0] - low[0]) *
+                      (high[2] - low[2]);
+            else // lambda/(lambda+2mu) rho int (1 - y) dy, times the width
+              {
+                const int    other = axis == 0 ? 2 : 0;
+                const double integral =
+                  (high[1] - low[1]) -
+                  (high[1] * high[1] - low[1] * low[1]) / 2;
+                exact =
+                  ratio * m.density * integral * (high[other] - low[other]);
+              }
+            right = right && exact > 0 &&
+                    std::abs(pair.first - exact) <= 1e-10 * exact;
+          }
+        std::cout << "  " << names[axis] << " joints, " << n_pairs
+                  << " block pairs: forces = the exact stress over the common "
+                     "face to 1e-10: "
+                  << yes_no(right && n_pairs > 0) << "\n";
+      }
+  }
+
   void
   column_3d(const std::string &geometry, const std::string &element)
   {
@@ -56,6 +156,7 @@ namespace
               << "; all gaps zero: " << yes_no(largest_gap < 1e-10 * largest)
               << "; max |u - u_exact| < 1e-10 max |u_exact|: "
               << yes_no(error < 1e-10 * largest) << "\n";
+    joint_forces(run, m);
   }
 
   /**
