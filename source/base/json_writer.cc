@@ -1,7 +1,9 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/json_writer.h>
+#include <unilateral/base/output_file.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -30,7 +32,19 @@ namespace unilateral
               result += "\\t";
               break;
             default:
-              result += c;
+              // Every other control character as \u00XX: JSON allows
+              // none raw (a run name or a message may hold one).
+              if (static_cast<unsigned char>(c) < 0x20)
+                {
+                  char code[7];
+                  std::snprintf(code,
+                                sizeof(code),
+                                "\\u%04x",
+                                static_cast<unsigned int>(c));
+                  result += code;
+                }
+              else
+                result += c;
           }
       return result + "\"";
     }
@@ -195,5 +209,6 @@ namespace unilateral
                        "': check that the output directory is writable");
     write(out);
     out << "\n";
+    close_written_file(out, file_name);
   }
 } // namespace unilateral

@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/output_file.h>
 #include <unilateral/base/ranks.h>
 
 #include "scene_state.h"
@@ -291,8 +292,7 @@ namespace unilateral::masonry
                                     const std::string &content) {
       std::ofstream file(directory / name);
       file << content;
-      if (!file)
-        throw InputError("cannot write '" + (directory / name).string() + "'");
+      close_written_file(file, (directory / name).string());
     };
     // The file the PVD record names: the VTU, or the PVTU joining the pieces.
     const std::string record_name =
@@ -323,7 +323,11 @@ namespace unilateral::masonry
         write(record_name, pvtu);
       }
     std::ofstream pvd(directory / "solution.pvd");
+    if (!pvd)
+      throw InputError("cannot write '" +
+                       (directory / "solution.pvd").string() + "'");
     dealii::DataOutBase::write_pvd_record(pvd, {{0.0, record_name}});
+    close_written_file(pvd, (directory / "solution.pvd").string());
   }
 
   template void

@@ -1,5 +1,7 @@
 // The plate scene's VTU/PVD output, in its own translation unit: DataOut is
 // the slowest deal.II header to compile.
+#include <unilateral/base/input_error.h>
+#include <unilateral/base/output_file.h>
 #include <unilateral/scenes/plate/bending.h>
 #include <unilateral/scenes/plate/plate_scene.h>
 
@@ -8,6 +10,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -108,10 +111,17 @@ namespace unilateral::plate
       const std::string vtu = name + ".vtu";
       {
         std::ofstream file(directory / vtu);
+        if (!file)
+          throw InputError("cannot write '" + (directory / vtu).string() + "'");
         data_out.write_vtu(file);
+        close_written_file(file, (directory / vtu).string());
       }
-      std::ofstream pvd(directory / (name + ".pvd"));
+      const std::filesystem::path record = directory / (name + ".pvd");
+      std::ofstream               pvd(record);
+      if (!pvd)
+        throw InputError("cannot write '" + record.string() + "'");
       dealii::DataOutBase::write_pvd_record(pvd, {{0.0, vtu}});
+      close_written_file(pvd, record.string());
     }
   } // namespace
 
