@@ -10,11 +10,13 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace unilateral
 {
@@ -317,6 +319,46 @@ namespace unilateral
                          directory.string() + "' (its message says why)");
     }
 
+    /**
+     * Refuse a parameter file whose 'include' lines lead back to a file
+     * already being read: deal.II's parser would recurse until the stack
+     * overflows (a crash with no message). Include paths are looked up as
+     * the parser does, from the working directory, and else beside the
+     * including file; one that exists nowhere is left to the parser's own
+     * message.
+     */
+    void
+    refuse_include_cycles(const std::filesystem::path        &file,
+                          std::vector<std::filesystem::path> &reading)
+    {
+      const std::filesystem::path canonical =
+        std::filesystem::weakly_canonical(file);
+      if (std::find(reading.begin(), reading.end(), canonical) != reading.end())
+        throw InputError("parameter file '" + reading.back().string() +
+                         "' includes '" + file.string() +
+                         "', which is already being read (an include "
+                         "cycle): remove that include line");
+      reading.push_back(canonical);
+      std::ifstream in(file);
+      std::string   line;
+      while (std::getline(in, line))
+        {
+          const std::size_t start = line.find_first_not_of(" \t");
+          if (start == std::string::npos ||
+              line.compare(start, 8, "include ") != 0)
+            continue;
+          std::string name = line.substr(start + 8);
+          name.erase(0, name.find_first_not_of(" \t"));
+          name.erase(name.find_last_not_of(" \t\r") + 1);
+          std::filesystem::path included = name;
+          if (!std::filesystem::exists(included))
+            included = file.parent_path() / name;
+          if (std::filesystem::is_regular_file(included))
+            refuse_include_cycles(included, reading);
+        }
+      reading.pop_back();
+    }
+
     int
     run(const std::string                                   &parameter_file,
         std::ostream                                        &out,
@@ -333,6 +375,10 @@ namespace unilateral
       if (!std::filesystem::is_regular_file(parameter_file))
         throw InputError("cannot read parameter file '" + parameter_file +
                          "': not a file");
+      {
+        std::vector<std::filesystem::path> reading;
+        refuse_include_cycles(parameter_file, reading);
+      }
       RunContext               context;
       dealii::ParameterHandler prm;
       declare_parameters(prm, context.solver);
