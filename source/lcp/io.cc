@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/output_file.h>
 #include <unilateral/lcp/io.h>
 
 #include <algorithm>
@@ -78,7 +79,9 @@ namespace unilateral::lcp
   } // namespace
 
   SparseMatrix
-  read_matrix_market(const std::string &file_name)
+  read_matrix_market(
+    const std::string                               &file_name,
+    const std::function<void(long long, long long)> &check_size)
   {
     std::ifstream in = open_for_reading(file_name, "matrix");
     std::string   line;
@@ -130,9 +133,17 @@ namespace unilateral::lcp
     if (rows > std::numeric_limits<Index>::max() ||
         entries > std::numeric_limits<Index>::max())
       fail(file_name, line_number, "matrix too large for 32-bit indices");
+    if (check_size)
+      check_size(rows, cols);
 
+    // Reserved for the entries the file can hold (a line holds at least
+    // "i j v"), not for what its size line claims.
+    std::error_code size_error;
+    const auto      bytes = std::filesystem::file_size(file_name, size_error);
+    const long long room  = size_error ? 0 : static_cast<long long>(bytes / 6);
+    const long long expected_entries = std::min(entries, room);
     std::vector<Eigen::Triplet<double, Index>> triplets;
-    triplets.reserve(symmetric ? 2 * entries : entries);
+    triplets.reserve(symmetric ? 2 * expected_entries : expected_entries);
     long long read = 0;
     while (read < entries && std::getline(in, line))
       {
@@ -199,6 +210,7 @@ namespace unilateral::lcp
       for (SparseMatrix::InnerIterator it(A, j); it; ++it)
         if (it.row() >= j)
           out << it.row() + 1 << " " << j + 1 << " " << it.value() << "\n";
+    close_written_file(out, file_name);
   }
 
   Vector
@@ -243,6 +255,7 @@ namespace unilateral::lcp
     std::ofstream out = open_for_writing(file_name);
     for (Index i = 0; i < v.size(); ++i)
       out << v[i] << "\n";
+    close_written_file(out, file_name);
   }
 
   void
@@ -315,15 +328,18 @@ namespace unilateral::lcp
                const std::string &constraints_file)
   {
     Problem problem;
-    problem.A = read_matrix_market(matrix_file);
     problem.b = read_vector(rhs_file);
-    if (problem.A.rows() == problem.A.cols() &&
-        problem.A.rows() != problem.b.size())
-      throw InputError("dimension mismatch: A in '" + matrix_file + "' is " +
-                       std::to_string(problem.A.rows()) + " x " +
-                       std::to_string(problem.A.cols()) + " but b in '" +
-                       rhs_file + "' has " + std::to_string(problem.b.size()) +
-                       " entries");
+    // Checked at A's size line, before a matrix of that size is allocated
+    // (a size line can claim billions of rows in a file of three lines).
+    problem.A = read_matrix_market(
+      matrix_file, [&](const long long rows, const long long cols) {
+        if (rows == cols && rows != problem.b.size())
+          throw InputError("dimension mismatch: A in '" + matrix_file +
+                           "' is " + std::to_string(rows) + " x " +
+                           std::to_string(cols) + " but b in '" + rhs_file +
+                           "' has " + std::to_string(problem.b.size()) +
+                           " entries");
+      });
     read_constraints(constraints_file,
                      problem.constrained,
                      problem.lower_bound,

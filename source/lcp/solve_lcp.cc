@@ -115,13 +115,10 @@ namespace unilateral::lcp
                          ": use 'Schur complement = true' (" + info.name +
                          " works on S only) or a sparse method");
       if (info.needs_tearing && problem.tearing == nullptr)
-        throw InputError(
-          "method '" + info.name + "' works on a problem torn into subdomains" +
-          (attempt.parameters.schur_complement ?
-             std::string(", not on the Schur complement on the constrained "
-                         "unknowns: set 'Solver/Schur complement = false'") :
-             std::string(", which this scene does not build (the masonry "
-                         "scene does): choose another method")));
+        throw InputError("method '" + info.name +
+                         "' works on a problem torn into subdomains, which "
+                         "this scene does not build (the masonry scene "
+                         "does): choose another method");
       if (info.needs_hierarchy && problem.hierarchy == nullptr)
         throw InputError("method '" + info.name +
                          "' works on a hierarchy of meshes, which this "
@@ -521,8 +518,15 @@ namespace unilateral::lcp
                            Solution               &solution,
                            std::ostream           *progress)
     {
+      const SolverInfo &method = SolverRegistry::get(parameters.method);
+      if (method.needs_tearing || method.needs_hierarchy)
+        throw InputError("method '" + method.name +
+                         "' works on the whole problem (its subdomains or "
+                         "its meshes), not on the Schur complement on the "
+                         "constrained unknowns: set 'Solver/Schur "
+                         "complement = false'");
       Report report;
-      report.solver = SolverRegistry::get(parameters.method).name + "_sc";
+      report.solver = method.name + "_sc";
       std::unique_ptr<SchurComplement> schur;
       {
         PhaseTimer timer(report, "schur complement");

@@ -2,6 +2,7 @@
 
 #include <unilateral/lcp/problem.h>
 
+#include <functional>
 #include <string>
 
 /**
@@ -18,8 +19,12 @@
  */
 namespace unilateral::lcp
 {
+  /// @p check_size, if given, is called with the rows and columns of the
+  /// size line before anything of that size is allocated (and may throw).
   SparseMatrix
-  read_matrix_market(const std::string &file_name);
+  read_matrix_market(
+    const std::string                               &file_name,
+    const std::function<void(long long, long long)> &check_size = {});
 
   void
   write_matrix_market(const SparseMatrix &A, const std::string &file_name);
