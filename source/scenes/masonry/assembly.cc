@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace unilateral::masonry
@@ -223,7 +224,8 @@ namespace unilateral::masonry
                const ChangeOfVariables<dim> &change,
                const ContactSet<dim>        &contacts,
                const LoadData<dim>          &loads,
-               double                       &energy_offset)
+               double                       &energy_offset,
+               double                       &offset_rounding)
   {
     const dealii::DoFHandler<dim> &dof_handler = discretisation.dof_handler;
     const unsigned int dofs_per_cell = discretisation.fe->n_dofs_per_cell();
@@ -255,6 +257,7 @@ namespace unilateral::masonry
     const lcp::Index *inner  = problem.A.innerIndexPtr();
     double           *values = problem.A.valuePtr();
     energy_offset            = 0;
+    offset_rounding          = 0;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -274,8 +277,10 @@ namespace unilateral::masonry
                     cell_matrix[i * dofs_per_cell + j] * change.offset(dofs[j]);
                   load[i] -= K_ij_c_j;
                   energy_offset += 0.5 * c_i * K_ij_c_j;
+                  offset_rounding += std::abs(0.5 * c_i * K_ij_c_j);
                 }
               energy_offset -= cell_rhs[i] * c_i;
+              offset_rounding += std::abs(cell_rhs[i] * c_i);
             }
 
         // Expand into the new variables: u_i = sum_t c_t u~_{v_t}, so the
@@ -345,6 +350,7 @@ namespace unilateral::masonry
         problem.constrained[k] = change.variable_of_constraint(k);
         problem.lower_bound[k] = contacts.constraints[k].bound;
       }
+    offset_rounding *= std::numeric_limits<double>::epsilon();
     return problem;
   }
 
@@ -380,12 +386,14 @@ namespace unilateral::masonry
                   const ChangeOfVariables<2> &,
                   const ContactSet<2> &,
                   const LoadData<2> &,
+                  double &,
                   double &);
   template lcp::Problem
   assemble_lcp<3>(const Discretisation<3> &,
                   const ChangeOfVariables<3> &,
                   const ContactSet<3> &,
                   const LoadData<3> &,
+                  double &,
                   double &);
   template std::vector<double>
   residual_forces<2>(const Discretisation<2> &,

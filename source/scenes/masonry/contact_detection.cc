@@ -530,6 +530,14 @@ namespace unilateral::masonry
               throw InputError("parameter 'Masonry/Boundary conditions/"
                                "Signorini gap' is not finite at " +
                                result.describe_node(node));
+            // As its help says: a support inside the block would push
+            // the wall off at the start, which no settlement means.
+            if (gap < 0)
+              throw InputError(
+                "parameter 'Masonry/Boundary conditions/Signorini gap' is " +
+                std::to_string(gap) + " < 0 at " + result.describe_node(node) +
+                ": the support would lie inside the block; give a gap >= 0 "
+                "(0: the support touches the block)");
             std::set<std::size_t> support_faces;
             for (const std::size_t item : group.items)
               support_faces.insert(c.signorini_face[item]);

@@ -258,7 +258,8 @@ namespace unilateral::masonry
                                     *state->change,
                                     state->contacts,
                                     state->loads,
-                                    energy_offset);
+                                    energy_offset,
+                                    energy_offset_rounding);
     // Blocks are free to move unless contacts hold them, and a wall is in
     // contact almost everywhere: the solvers' automatic settings for both.
     // A~ = C~^-T A C~^-1 is a congruence of the semidefinite stiffness.
@@ -312,7 +313,7 @@ namespace unilateral::masonry
   // or n . u + gap on a support), its force lambda and whether it is active.
   template <int dim>
   void
-  MasonryScene<dim>::postprocess(const RunContext &, lcp::Report &report)
+  MasonryScene<dim>::postprocess(const RunContext &context, lcp::Report &report)
   {
     report.energy = report.energy * unit + energy_offset;
     report.regularisation *= unit;
@@ -366,7 +367,60 @@ namespace unilateral::masonry
         std::abs(c.normal_gap) <= 1e-10 * max_displacement &&
         std::abs(c.contact_force) <= 1e-10 * largest_force;
     if (report.converged())
-      compute_statics();
+      {
+        compute_statics();
+        check_statics(context.solver.kkt_tolerance, report);
+      }
+  }
+
+  /**
+   * The answer's reactions must balance the loads to the KKT tolerance
+   * (relative to the total load, where there is one). The LCP's own checks
+   * cannot see what was lost before it: prescribed displacements far
+   * larger than the elastic ones enter its right-hand side as f - K c,
+   * whose cancellation double precision does not resolve (a shift of 1e6
+   * gave an energy 48 times too large, with the LCP's residuals at 2e-15);
+   * the statics, summed from the solution in the physical unknowns, show
+   * it.
+   */
+  template <int dim>
+  void
+  MasonryScene<dim>::check_statics(const double kkt_tolerance,
+                                   lcp::Report &report) const
+  {
+    double loads = 0;
+    for (const double component : balance.load)
+      loads = std::max(loads, std::abs(component));
+    const double imbalance =
+      std::max(balance.force_imbalance, balance.moment_imbalance);
+    std::ostringstream message;
+    message << std::setprecision(3);
+    // The energy's part from the prescribed displacements,
+    // 1/2 c^T K c - f^T c, cancels to far below its terms there.
+    if (report.energy != 0 &&
+        energy_offset_rounding > kkt_tolerance * std::abs(report.energy))
+      message << "the energy is resolved only to "
+              << energy_offset_rounding / std::abs(report.energy)
+              << " of its size (> 'Solver/KKT tolerance' = " << kkt_tolerance
+              << "): the prescribed displacements are many orders larger "
+                 "than the elastic ones, and their share of it cancels in "
+                 "double precision";
+    else if (loads > 0 && imbalance > kkt_tolerance)
+      message << "the supports' reactions balance the loads only to "
+              << imbalance << " of the total load (> 'Solver/KKT tolerance' = "
+              << kkt_tolerance
+              << "), although the LCP's residuals pass: its data lost that "
+                 "accuracy before it was solved, where displacements "
+                 "(prescribed ones, or settlements) are many orders larger "
+                 "than the elastic ones";
+    else
+      return;
+    message << "; prescribe smaller displacements, or give lengths, loads "
+               "and stiffness in units closer to each other";
+    report.status  = lcp::Status::inaccurate;
+    report.message = report.message.empty() ?
+                       message.str() :
+                       message.str() + "; " + report.message;
   }
 
   /**

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -551,6 +553,34 @@ namespace unilateral::masonry
              "deal.II's GridIn cannot read it: " +
                dealii::Utilities::trim(reason));
       }
+
+    // Far from the origin, double precision keeps a node's coordinates
+    // only to epsilon |x|, and the cells' Jacobians (differences of them)
+    // to epsilon |x| / h relative: the stiffness with them (measured: a
+    // wall 1e11 from the origin, cells 0.5, solved with its energy 5e-5
+    // off). Refused where that exceeds the default KKT tolerance.
+    {
+      double farthest = 0;
+      for (const auto &vertex : file_mesh.get_vertices())
+        for (unsigned int d = 0; d < dim; ++d)
+          farthest = std::max(farthest, std::abs(vertex[d]));
+      const double geometry_precision =
+        std::numeric_limits<double>::epsilon() * farthest / scan.smallest_edge;
+      // (A collapsed edge is refused below, with its own message.)
+      if (scan.smallest_edge > 0 && geometry_precision > 1e-8)
+        {
+          std::ostringstream message;
+          message << std::setprecision(3) << "its nodes lie up to " << farthest
+                  << " from the origin, " << farthest / scan.smallest_edge
+                  << " times its shortest edge: double precision keeps the "
+                     "cells' geometry only to "
+                  << geometry_precision
+                  << " of their size, and the stiffness with it; move the "
+                     "mesh near the origin (subtract a point of the "
+                     "structure from every node)";
+          fail(file_name, message.str());
+        }
+    }
 
     // The entity and physical tag of each of GridIn's cells, found by its
     // centroid.

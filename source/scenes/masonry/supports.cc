@@ -120,6 +120,10 @@ namespace unilateral::masonry
           found = end != selection.boundary.c_str() && *end == '\0' &&
                   number >= 0 && number < 255;
           id = static_cast<dealii::types::boundary_id>(number);
+          // 0 without a name is what deal.II gives every face no tag
+          // names, the joints between blocks among them: not a support.
+          if (found && id == 0 && names.name(0) == "0")
+            found = false;
         }
       if (found && names.optional.count(selection.boundary) > 0)
         return id;

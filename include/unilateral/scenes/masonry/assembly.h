@@ -66,7 +66,11 @@ namespace unilateral::masonry
    * product is formed; the sparsity pattern comes from the same expansion.
    * DOFs without variables (held, rollers) have no terms and drop out.
    * @p energy_offset is set to 1/2 c^T K c - f^T c, the physical energy
-   * minus the LCP's.
+   * minus the LCP's, and @p offset_rounding to the rounding error of that
+   * sum (epsilon times the sum of its terms' sizes): where prescribed
+   * displacements are many orders larger than the elastic ones, the
+   * terms cancel to far below their size, and double precision keeps the
+   * energy only to that.
    */
   template <int dim>
   lcp::Problem
@@ -74,7 +78,8 @@ namespace unilateral::masonry
                const ChangeOfVariables<dim> &change,
                const ContactSet<dim>        &contacts,
                const LoadData<dim>          &loads,
-               double                       &energy_offset);
+               double                       &energy_offset,
+               double                       &offset_rounding);
 
   /**
    * The residual R = K u - f of the physical displacement @p u at every

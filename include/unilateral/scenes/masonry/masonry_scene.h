@@ -237,6 +237,12 @@ namespace unilateral::masonry
     void
     compute_statics();
 
+    /// Downgrade a converged @p report whose statics (compute_statics) do
+    /// not balance to @p kkt_tolerance, or whose energy's share from the
+    /// prescribed displacements is not resolved that finely.
+    void
+    check_statics(double kkt_tolerance, lcp::Report &report) const;
+
     /// How many times longer the cells of the coarse-mesh start's mesh are
     /// along x and y ({1, 1}: this run takes no such start).
     std::array<unsigned int, 2>
@@ -270,10 +276,12 @@ namespace unilateral::masonry
     Sizes                              problem_sizes;
     std::vector<ConstraintResult<dim>> constraints;
     Statics<dim>                       balance;
-    double                             max_displacement  = 0;
-    double                             unit              = 1;
-    double                             energy_offset     = 0;
-    unsigned int                       n_closed_contacts = 0;
+    double                             max_displacement = 0;
+    double                             unit             = 1;
+    double                             energy_offset    = 0;
+    /// Its rounding error: epsilon times the sum of its terms' sizes.
+    double       energy_offset_rounding = 0;
+    unsigned int n_closed_contacts      = 0;
     /// Closed without force (see postprocess).
     unsigned int n_degenerate_contacts = 0;
   };
