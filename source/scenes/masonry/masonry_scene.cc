@@ -776,8 +776,13 @@ namespace unilateral::masonry
     if (parameters.geometry.from_mesh_file)
       return "'Masonry/Mesh file' = " + parameters.geometry.mesh_file +
              refinement;
+    std::ostringstream thickness;
+    if (dim == 3)
+      thickness << ", 'Masonry/Thickness' = " << parameters.geometry.thickness
+                << ", 'Masonry/Blocks through the thickness' = "
+                << parameters.geometry.blocks_through_thickness;
     return "'Masonry/Blocks per side' = " +
-           std::to_string(parameters.geometry.m) + refinement;
+           std::to_string(parameters.geometry.m) + thickness.str() + refinement;
   }
 
   std::unique_ptr<Scene>

@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/memory.h>
 #include <unilateral/scenes/masonry/mesh.h>
 
 #include <deal.II/grid/tria.h>
@@ -172,6 +173,16 @@ namespace unilateral::masonry
                       (dim == 3 ? nz + 1 : 1) * layers;
         n_boxes += static_cast<std::size_t>(nx) * ny * nz * layers;
       }
+    // Refused before anything is built where the set-up alone (mesh, DOFs,
+    // contact detection) would not fit: a lower bound of 1 kB per cell in
+    // 2D and 2 kB in 3D (a 2D wall of a million Q2 cells peaked at 3 GB
+    // before its matrix). A 'Thickness' of 1e6 would otherwise allocate
+    // until the kernel kills the run.
+    const std::size_t n_cells_built =
+      simplex ? (dim == 2 ? 2 : 6) * n_boxes : n_boxes;
+    memory::require(static_cast<double>(n_cells_built) * (dim == 2 ? 1e3 : 2e3),
+                    "the mesh of " + std::to_string(n_cells_built) +
+                      " cells and its set-up");
     std::vector<dealii::Point<dim>>    vertices;
     std::vector<dealii::CellData<dim>> cells;
     vertices.reserve(n_vertices);
