@@ -323,7 +323,9 @@ namespace unilateral::masonry
               if (dim == 2 && std::abs(found->second[2]) > 0)
                 fail(file,
                      "a 2D mesh must lie in the plane z = 0 (node " +
-                       std::to_string(node) + " has z != 0)");
+                       std::to_string(node) +
+                       " has z != 0); for a 3D mesh (hexahedra or "
+                       "tetrahedra) set 'Masonry/Dimension = 3'");
               for (unsigned int d = 0; d < dim; ++d)
                 cell.centroid[d] +=
                   found->second[d] / static_cast<double>(element.nodes.size());
