@@ -22,16 +22,6 @@ using namespace tfeti_test;
 
 namespace
 {
-  /// The report's figure @p name, or -1 if it has none.
-  double
-  figure(const lcp::Report &report, const std::string &name)
-  {
-    for (const auto &[key, value] : report.figures)
-      if (key == name)
-        return value;
-    return -1;
-  }
-
   std::string
   factorisation(const std::string &choice)
   {

@@ -28,15 +28,6 @@ using namespace tfeti_test;
 
 namespace
 {
-  double
-  figure(const lcp::Report &report, const std::string &name)
-  {
-    for (const auto &[key, value] : report.figures)
-      if (key == name)
-        return value;
-    return -1;
-  }
-
   /// A U of unit squares: the base x in [0, 3], y in [0, 1] and two posts
   /// x in [0, 1] and [2, 3] up to y = 7, one block (entity 1); boundary 1
   /// the base's lower side, 2 the left side.

@@ -20,6 +20,16 @@ namespace tfeti_test
 {
   using namespace masonry_test;
 
+  /// The report's figure @p name, or -1 if it has none.
+  inline double
+  figure(const lcp::Report &report, const std::string &name)
+  {
+    for (const auto &[key, value] : report.figures)
+      if (key == name)
+        return value;
+    return -1;
+  }
+
   inline std::string
   prm_text(const std::string &geometry,
            const unsigned int m,
