@@ -281,6 +281,25 @@ namespace unilateral::plate
     summary.set("coarse_mesh_start", levels);
   }
 
+  std::string
+  PlateScene::failure_description(const lcp::Report &report) const
+  {
+    // Only a factorisation's verdict (PDAS's "... is singular for the
+    // active set"), not a method's numerical breakdown, which the status
+    // names alike.
+    if (report.status != lcp::Status::singular ||
+        report.message.find("is singular") == std::string::npos)
+      return Scene::failure_description(report);
+    return "a factorisation judged the plate's stiffness singular, but a "
+           "clamped plate's is positive definite: its condition estimate "
+           "(smallest to largest pivot) fell below 1e-14, most likely because the "
+           "deflection, slope and twist unknowns differ in size by powers "
+           "of the element size, which lengths far from 1 in the plate's "
+           "units make extreme; give the lengths in units nearer the "
+           "plate's size, or use 'Solver/Method = tnnmg' (" +
+           report.message + ")";
+  }
+
   UNILATERAL_REGISTER_SCENE(
     PlateScene,
     "a clamped Kirchhoff plate on an obstacle, Bogner-Fox-Schmit elements "

@@ -70,6 +70,11 @@ namespace unilateral::plate
              " or 'Elements y' = " + std::to_string(parameters.geometry.n_y);
     }
 
+    /// A clamped plate's stiffness is positive definite: 'singular' can
+    /// only be the factorisation's condition test, which says why.
+    std::string
+    failure_description(const lcp::Report &report) const override;
+
     /// n1 n2 >= 128^2: from there on huge pages gain more than the
     /// restart costs (measured: README.md, "How the solve works").
     bool
