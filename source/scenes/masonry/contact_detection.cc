@@ -103,8 +103,12 @@ namespace unilateral::masonry
         n = dealii::cross_product_3d(v[1] - v[0], v[2] - v[0]);
       else // deal.II's quadrilateral vertex order: diagonals 0-3 and 1-2
         n = dealii::cross_product_3d(v[3] - v[0], v[2] - v[1]);
+      // |n| is the face's length in 2D and twice its area in 3D (a
+      // quadrilateral's: the diagonals' cross product); compared with the
+      // tolerance (a length) in the same units, so that the test does not
+      // change with the mesh's length unit.
       const double size = v[0].distance(v.back());
-      if (n.norm() <= tolerance * size)
+      if (n.norm() <= tolerance * (dim == 2 ? 1.0 : size))
         {
           std::ostringstream message;
           message << "block " << block << " has a degenerate face at (" << v[0]
