@@ -476,6 +476,13 @@ namespace unilateral::lcp
                             ": the answer given is " + label + "'s";
           report.status = Status::converged;
           solution      = check;
+          // The answer is the checker's: so are its method and counts.
+          report.solver                = check_report.solver;
+          report.iterations            = check_report.iterations;
+          report.projection_iterations = check_report.projection_iterations;
+          report.continuation_stages   = check_report.continuation_stages;
+          report.projected             = check_report.projected;
+          report.regularisation        = check_report.regularisation;
         }
       else if (check_report.status == Status::infeasible)
         {
