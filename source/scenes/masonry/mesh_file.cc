@@ -139,7 +139,18 @@ namespace unilateral::masonry
                   if (d == dim)
                     scan.cell_tag_names[tag] = name;
                   else if (d == dim - 1)
-                    scan.boundary_tag_names[name] = tag;
+                    {
+                      // Two boundary groups of one name: a support given
+                      // by that name would take one of them silently.
+                      const auto [where, added] =
+                        scan.boundary_tag_names.emplace(name, tag);
+                      if (!added && where->second != tag)
+                        fail(file,
+                             "physical name '" + name + "' names groups " +
+                               std::to_string(where->second) + " and " +
+                               std::to_string(tag) +
+                               "; give each group its own name");
+                    }
                 }
             }
           else if (section == "$Entities")
