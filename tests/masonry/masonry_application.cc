@@ -2,14 +2,19 @@
 //  1. bad input gives exit code 1 and one line naming the parameter, the
 //     value and the fix (printed here: code and message), and so does a
 //     wall too large for 'Memory limit';
-//  2. two runs write VTU/PVD and summary.json, which read_masonry_vtu.py
+//  2. prescribed displacements far larger than the elastic ones end
+//     'inaccurate' (exit 2) where double precision loses the energy, and
+//     converge with the shift-independent answer where it does not;
+//  3. two runs write VTU/PVD and summary.json, which read_masonry_vtu.py
 //     reads back with VTK's XML reader (what ParaView sees) and checks
 //     against the exact column solution (laminae, gap 0, P2) and for a
 //     settling running bond with two materials (Q2).
 #include <unilateral/application.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -91,6 +96,22 @@ main()
   bad_input("g < 0",
             masonry_prm("  subsection Boundary conditions\n"
                         "    set Relative gap = -0.1\n  end\n"));
+  // Accepted before ff1e49a: the support pushed the blocks up (exit 0).
+  bad_input("Signorini gap < 0",
+            masonry_prm("  set Blocks per side = 4\n"
+                        "  subsection Boundary conditions\n"
+                        "    set Signorini gap = -0.1\n  end\n"));
+  // Boundary number 0 is what the joints between blocks carry: accepted
+  // before ff1e49a, every joint was fixed (exit 0).
+  bad_input("Fixed = 0",
+            masonry_prm("  set Blocks per side = 4\n"
+                        "  subsection Boundary conditions\n"
+                        "    set Fixed = 0\n  end\n"));
+  // Before 8c14f18: "entry 130 of b (counted from 1) is not a finite number".
+  bad_input("Traction = 0; -1/0",
+            masonry_prm("  set Blocks per side = 4\n"
+                        "  subsection Boundary conditions\n"
+                        "    set Traction = 0; -1/0\n  end\n"));
   bad_input("Largest aspect ratio = 0.5",
             masonry_prm("  subsection Tearing\n"
                         "    set Largest aspect ratio = 0.5\n  end\n"));
@@ -137,8 +158,65 @@ main()
               << err.str();
   }
 
-  std::cout << "Patch test output (laminae, m = 4, g = 0, P2):\n";
   std::string error;
+  {
+    // The right half of the base moved sideways by a shift s: for s >= 1
+    // the joint opens and the answer does not depend on s. Before ff1e49a
+    // s = 1e6 ended converged with energy -3 instead of -0.0625 (exit 0):
+    // the share of the prescribed displacements, a difference of terms
+    // 1e13 times larger, is lost in double precision.
+    std::cout << "Prescribed displacement s; 0 on the base where x > s "
+                 "(m = 4):\n";
+    const auto shifted = [](const std::string &shift) {
+      return masonry_prm("  set Blocks per side = 4\n"
+                         "  subsection Boundary conditions\n"
+                         "    set Normal displacement zero = left\n"
+                         "    set Prescribed displacement boundaries = "
+                         "base where x > s\n"
+                         "    set Prescribed displacement = " +
+                         shift + "; 0\n  end\n");
+    };
+    const auto energy = [](const std::string &name) {
+      std::ifstream     in("results/" + name + "/summary.json");
+      std::stringstream text;
+      text << in.rdbuf();
+      const std::string json = text.str();
+      const std::size_t at   = json.find("\"energy\": ");
+      return at == std::string::npos ?
+               std::nan("") :
+               std::strtod(json.c_str() + at + 10, nullptr);
+    };
+    // The share's rounding, which the program bounds by epsilon times its
+    // terms, grows as s^2: 6.4e-11 of the energy at s = 1, 2.6e-10 at 2,
+    // 6.4e-9 at 10 (measured: the energies differ by 2.3e-10 and 2.4e-9).
+    // Hence 1e-9 against s = 2, and against s = 10 the KKT tolerance
+    // (1e-8), to which both runs were accepted as converged.
+    bool all_converged = true;
+    for (const std::string shift : {"1", "2", "10"})
+      {
+        all_converged = run("shift_" + shift, shifted(shift), error) == 0 &&
+                        error.empty() && all_converged;
+      }
+    const double e_1 = energy("shift_1"), e_2 = energy("shift_2"),
+                 e_10 = energy("shift_10");
+    std::cout << "  s = 1, 2 and 10: exit code 0, stderr empty: "
+              << (all_converged ? "yes" : "no")
+              << "; energy of s = 1 equal to that of s = 2 to 1e-9: "
+              << (std::abs(e_1 - e_2) <= 1e-9 * std::abs(e_2) ? "yes" : "no")
+              << ", to that of s = 10 to 1e-8: "
+              << (std::abs(e_1 - e_10) <= 1e-8 * std::abs(e_10) ? "yes" : "no")
+              << "\n";
+    const int code_1e6 = run("shift_1e6", shifted("1e6"), error);
+    std::cout << "  s = 1e6: exit code 2: " << (code_1e6 == 2 ? "yes" : "no")
+              << "; stderr says 'the energy is resolved only to': "
+              << (error.find("the energy is resolved only to") !=
+                      std::string::npos ?
+                    "yes" :
+                    "no")
+              << "\n";
+  }
+
+  std::cout << "Patch test output (laminae, m = 4, g = 0, P2):\n";
   std::cout << "  exit code "
             << run("patch",
                    masonry_prm("  set Geometry = laminae\n"
