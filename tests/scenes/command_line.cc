@@ -2,7 +2,8 @@
 // file runs the default scene, which is valid but surprising, so one line on
 // stdout says so; a directory given as the parameter file is "not a file";
 // extra arguments after --help or --print-parameters are refused with one
-// line and exit code 1, while the plain forms still work.
+// line and exit code 1, while the plain forms still work; include lines
+// that lead back to a file being read are refused with one line.
 #include "../application_test_tools.h"
 
 #include <filesystem>
@@ -95,6 +96,21 @@ main()
                run({"--print-parameters", "xml"}),
                {"xml", "prm or json"});
   expect_error("two parameter files", run({"a.prm", "b.prm"}), {"2"});
+
+  // Before 1e62eb9 deal.II's parser recursed until the stack overflowed
+  // (exit 139, nothing on stderr).
+  write("includes_itself.prm",
+        "set Scene = masonry\ninclude includes_itself.prm\n");
+  expect_error("a parameter file that includes itself",
+               run({"includes_itself.prm"}),
+               {"includes_itself.prm", "include cycle"},
+               false); // (the line quotes the folder the test runs in)
+  write("cycle_a.prm", "set Scene = masonry\ninclude cycle_b.prm\n");
+  write("cycle_b.prm", "# the second file\ninclude cycle_a.prm\n");
+  expect_error("two parameter files that include each other",
+               run({"cycle_a.prm"}),
+               {"cycle_b.prm", "cycle_a.prm", "include cycle"},
+               false);
 
   expect_success("--help", run({"--help"}));
   expect_success("--print-parameters", run({"--print-parameters"}));
