@@ -50,4 +50,21 @@ main()
   expect_error("a lower bound of -inf",
                run_lcp("minus_inf", "A.mtx", "c_minus_inf.txt"),
                {"c_minus_inf.txt:2:", "not listed"});
+  // Before cedf554 the matrix of the size line was allocated first (7 GB
+  // after 24 s); now the mismatch is found at once.
+  write("huge.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n"
+        "2000000000 2000000000 1\n1 1 1\n");
+  write("b_one.txt", "1\n");
+  write("c_one.txt", "1 0\n");
+  write("huge.prm",
+        "set Scene = lcp\n"
+        "subsection Output\n  set Directory = results\n"
+        "  set Print timings = false\n  set Progress = false\nend\n"
+        "subsection LCP\n  set Matrix file = huge.mtx\n"
+        "  set Right-hand side file = b_one.txt\n"
+        "  set Constraints file = c_one.txt\nend\n");
+  expect_error("a size line of 2e9 rows with b of one entry",
+               run({"huge.prm"}),
+               {"dimension mismatch"});
 }
