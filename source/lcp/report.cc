@@ -34,6 +34,16 @@ namespace unilateral::lcp
   }
 
   void
+  Report::take_counts_of(const Report &other)
+  {
+    iterations            = other.iterations;
+    projection_iterations = other.projection_iterations;
+    continuation_stages   = other.continuation_stages;
+    projected             = other.projected;
+    regularisation        = other.regularisation;
+  }
+
+  void
   Report::set_figure(const std::string &name, const double value)
   {
     for (auto &entry : figures)

@@ -477,12 +477,8 @@ namespace unilateral::lcp
           report.status = Status::converged;
           solution      = check;
           // The answer is the checker's: so are its method and counts.
-          report.solver                = check_report.solver;
-          report.iterations            = check_report.iterations;
-          report.projection_iterations = check_report.projection_iterations;
-          report.continuation_stages   = check_report.continuation_stages;
-          report.projected             = check_report.projected;
-          report.regularisation        = check_report.regularisation;
+          report.solver = check_report.solver;
+          report.take_counts_of(check_report);
         }
       else if (check_report.status == Status::infeasible)
         {
@@ -570,10 +566,7 @@ namespace unilateral::lcp
                                                sc_eps);
       report.status                       = reduced_report.status;
       report.message                      = reduced_report.message;
-      report.iterations                   = reduced_report.iterations;
-      report.projected                    = reduced_report.projected;
-      report.projection_iterations = reduced_report.projection_iterations;
-      report.regularisation        = reduced_report.regularisation;
+      report.take_counts_of(reduced_report);
       report.counters += reduced_report.counters;
       report.add_times(reduced_report);
       PhaseTimer timer(report, "recover u_E");

@@ -99,6 +99,12 @@ namespace unilateral::lcp
     void
     set_figure(const std::string &name, double value);
 
+    /// Take @p other's iterations, projection iterations, continuation
+    /// stages, projection flag and regularisation: where its answer is
+    /// the one given (a verifier's, the Schur complement's solve).
+    void
+    take_counts_of(const Report &other);
+
     /// The phase times of @p other, each named with @p prefix in front.
     void
     add_times(const Report &other, const std::string &prefix = "");
