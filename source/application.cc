@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <string>
 #include <system_error>
@@ -199,22 +200,27 @@ namespace unilateral
     remove_earlier_outputs(const std::filesystem::path &directory,
                            const std::string           &parameter_file)
     {
-      const std::set<std::string> names      = {"summary.json",
-                                                "parameters.prm",
-                                                "u.txt",
-                                                "lambda.txt",
-                                                "active_set.txt",
-                                                "lcp_A.mtx",
-                                                "lcp_b.txt",
-                                                "lcp_constraints.txt"};
-      const std::set<std::string> extensions = {".vtu", ".pvtu", ".pvd"};
+      const std::set<std::string> names = {"summary.json",
+                                           "parameters.prm",
+                                           "u.txt",
+                                           "lambda.txt",
+                                           "active_set.txt",
+                                           "lcp_A.mtx",
+                                           "lcp_b.txt",
+                                           "lcp_constraints.txt"};
+      // The scenes' VTU, PVTU and PVD files by their names only (masonry:
+      // solution.pvd, solution_000.vtu, solution_000.pvtu and its pieces
+      // solution_000.R.vtu; plate: plate.* and nodes.*): the folder may hold
+      // the user's own (Directory = . or a shared folder).
+      const std::regex ours(
+        "(solution|solution_[0-9]+(\\.[0-9]+)?|plate|nodes)\\.(vtu|pvtu|pvd)");
       for (const auto &entry : std::filesystem::directory_iterator(directory))
         {
           const std::filesystem::path &file = entry.path();
           std::error_code              error;
           if (!entry.is_regular_file() ||
               (names.count(file.filename().string()) == 0 &&
-               extensions.count(file.extension().string()) == 0) ||
+               !std::regex_match(file.filename().string(), ours)) ||
               std::filesystem::equivalent(file, parameter_file, error))
             continue;
           if (!std::filesystem::remove(file, error) && error)

@@ -1,5 +1,6 @@
 // A run starts by removing what an earlier run wrote into its directory,
-// and nothing else (issue 21: two runs into the same directory mixed their
+// and nothing else, not even the user's own VTU files beside them (issue
+// 21: two runs into the same directory mixed their
 // files, and a masonry solution_000.vtu survived beside a plate
 // summary.json). Three scenes run in turn into one directory; after each the
 // directory holds that run's files, the user's own files and folders, and
@@ -41,6 +42,7 @@ main()
   fs::remove_all("results");
   fs::create_directories("results/shared/pictures");
   write("results/shared/notes.md", "the user's own notes\n");
+  write("results/shared/my_model.vtu", "the user's own VTU, kept\n");
   write("results/shared/pictures/solution_000.vtu", "a copy, kept\n");
 
   write("A.mtx",
