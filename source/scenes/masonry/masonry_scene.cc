@@ -387,8 +387,8 @@ namespace unilateral::masonry
    * KKT tolerance (relative to the total load). The LCP's own checks
    * cannot see what was lost before it: prescribed displacements far
    * larger than the elastic ones enter its right-hand side as f - K c,
-   * whose cancellation double precision does not resolve (a shift of 1e6
-   * gave an energy 48 times too large, with the LCP's residuals at 2e-15).
+   * whose cancellation double precision does not resolve (measured:
+   * benchmarks/stress/README.md, "Input checks of 2026-11-27").
    */
   template <int dim>
   void
@@ -415,8 +415,8 @@ namespace unilateral::masonry
     // Only with prescribed displacements: without them b = f has no
     // cancellation, the LCP's checks already judged the answer, and the
     // statics, summed from K u - f of large rigid motions, carry a
-    // rounding of their own (stack bond m = 2 refined 6 times, settled by
-    // H/2: 2e-8 on an exact answer).
+    // rounding of their own, above the tolerance on exact answers of
+    // settled walls (the README named above).
     else if (state->change->has_offsets() && loads > 0 &&
              imbalance > kkt_tolerance)
       message << "the supports' reactions balance the loads only to "
@@ -710,7 +710,7 @@ namespace unilateral::masonry
       {
         const auto found =
           std::find(boundaries.begin(), boundaries.end(), balance.support[k]);
-        const size_t b = found - boundaries.begin();
+        const std::size_t b = found - boundaries.begin();
         if (found == boundaries.end())
           {
             boundaries.push_back(balance.support[k]);

@@ -174,10 +174,10 @@ namespace unilateral::masonry
         n_boxes += static_cast<std::size_t>(nx) * ny * nz * layers;
       }
     // Refused before anything is built where the set-up alone (mesh, DOFs,
-    // contact detection) would not fit: a lower bound of 1 kB per cell in
-    // 2D and 2 kB in 3D (a 2D wall of a million Q2 cells peaked at 3 GB
-    // before its matrix). A 'Thickness' of 1e6 would otherwise allocate
-    // until the kernel kills the run.
+    // contact detection) would not fit, by a lower bound per cell (the
+    // measured set-up: benchmarks/stress/README.md, "Input checks of
+    // 2026-11-27"); a huge 'Thickness' would otherwise allocate until the
+    // kernel kills the run.
     const std::size_t n_cells_built =
       simplex ? (dim == 2 ? 2 : 6) * n_boxes : n_boxes;
     memory::require(static_cast<double>(n_cells_built) * (dim == 2 ? 1e3 : 2e3),

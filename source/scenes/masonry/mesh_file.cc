@@ -569,9 +569,9 @@ namespace unilateral::masonry
 
     // Far from the origin, double precision keeps a node's coordinates
     // only to epsilon |x|, and the cells' Jacobians (differences of them)
-    // to epsilon |x| / h relative: the stiffness with them (measured: a
-    // wall 1e11 from the origin, cells 0.5, solved with its energy 5e-5
-    // off). Refused where that exceeds the default KKT tolerance.
+    // to epsilon |x| / h relative: the stiffness with them (measured:
+    // benchmarks/stress/README.md, "Input checks of 2026-11-27"). Refused
+    // where that exceeds the default KKT tolerance.
     {
       double farthest = 0;
       for (const auto &vertex : file_mesh.get_vertices())
