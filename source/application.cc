@@ -54,6 +54,22 @@ namespace unilateral
       using std::runtime_error::runtime_error;
     };
 
+    /// Whether @p error is not the input's fault: a check of the program's
+    /// own consistency (std::logic_error), or a library's failure (CHOLMOD,
+    /// MUMPS, PETSc and MPI report theirs as runtime errors). Not an
+    /// InputError, nor what the system refused (files and folders:
+    /// std::system_error, the user's to fix), nor input a library refuses
+    /// (deal.II's mesh readers throw neither kind).
+    bool
+    is_internal(const std::exception &error)
+    {
+      if (dynamic_cast<const InputError *>(&error) != nullptr ||
+          dynamic_cast<const std::system_error *>(&error) != nullptr)
+        return false;
+      return dynamic_cast<const std::logic_error *>(&error) != nullptr ||
+             dynamic_cast<const std::runtime_error *>(&error) != nullptr;
+    }
+
     // The default scene: the masonry wall, the program's first use.
     std::string
     default_scene()
@@ -478,33 +494,10 @@ namespace unilateral
                     memory::format(memory::available()) + " left); " +
                     memory_fix(*scene);
         }
-      catch (const InputError &error)
-        {
-          failure = one_line_message(error);
-        }
-      // Files and folders the system refused (permissions, a full disk):
-      // the user's to fix, as a bad input.
-      catch (const std::system_error &error)
-        {
-          failure = one_line_message(error);
-        }
-      // Not the input: a check of the program's own consistency, or a
-      // library's failure (CHOLMOD, MUMPS, PETSc and MPI report theirs as
-      // runtime errors). Input the libraries refuse (deal.II's mesh
-      // readers) arrives as neither, and stays a bad input.
-      catch (const std::logic_error &error)
-        {
-          failure  = one_line_message(error);
-          internal = true;
-        }
-      catch (const std::runtime_error &error)
-        {
-          failure  = one_line_message(error);
-          internal = true;
-        }
       catch (const std::exception &error)
         {
-          failure = one_line_message(error);
+          failure  = one_line_message(error);
+          internal = is_internal(error);
         }
       if (!failure.empty())
         {

@@ -242,11 +242,13 @@ namespace unilateral::lcp
   }
 
   void
-  clamp_rounded_diagonal(DenseMatrix &schur, const Vector &original_diagonal)
+  clamp_rounded_diagonal(DenseMatrix              &schur,
+                         const SparseMatrix       &A,
+                         const std::vector<Index> &indices)
   {
     for (Index j = 0; j < schur.rows(); ++j)
       if (schur(j, j) < 0 &&
-          schur(j, j) >= -1e-10 * std::abs(original_diagonal[j]))
+          schur(j, j) >= -1e-10 * std::abs(A.coeff(indices[j], indices[j])))
         schur(j, j) = 0;
   }
 

@@ -55,13 +55,7 @@ namespace unilateral::lcp
     // Symmetrise away round-off so the reduced problem passes the checks,
     // and clamp what round-off made of a vanishing diagonal.
     dense = 0.5 * (dense + dense.transpose()).eval();
-    {
-      Vector original_diagonal(n_c);
-      for (Index k = 0; k < n_c; ++k)
-        original_diagonal[k] =
-          problem.A.coeff(problem.constrained[k], problem.constrained[k]);
-      clamp_rounded_diagonal(dense, original_diagonal);
-    }
+    clamp_rounded_diagonal(dense, problem.A, problem.constrained);
 
     reduced.A = dense.sparseView(0.0, 0.0);
     // sparseView drops exact zeros; keep the diagonal in the pattern.

@@ -124,12 +124,7 @@ namespace unilateral::lcp
     // The dense LCP in z = u_U - l_U: lambda_U = q + M z, as a Problem
     // (A = M, b = -q, every index bounded below by 0).
     M = 0.5 * (M + M.transpose()).eval();
-    {
-      Vector original_diagonal(k);
-      for (Index r = 0; r < k; ++r)
-        original_diagonal[r] = problem.A.coeff(subset[r], subset[r]);
-      clamp_rounded_diagonal(M, original_diagonal);
-    }
+    clamp_rounded_diagonal(M, problem.A, subset);
     Problem reduced;
     reduced.A = M.sparseView();
     reduced.b.resize(k);

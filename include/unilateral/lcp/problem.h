@@ -121,9 +121,10 @@ namespace unilateral::lcp
 
   /**
    * Set to zero the diagonal entries of @p schur, a Schur complement
-   * A_UU - A_UF A_FF^-1 A_FU formed by the solver layer itself, that are
-   * negative by no more than 1e-10 times the diagonal of A they came from
-   * (@p original_diagonal, entry by entry): A is semidefinite (verified to
+   * A_UU - A_UF A_FF^-1 A_FU formed by the solver layer itself (U =
+   * @p indices, in the order of its rows), that are negative by no more
+   * than 1e-10 times the diagonal of @p A they came from: A is
+   * semidefinite (verified to
    * that tolerance), so the complement is, and its diagonal vanishes
    * exactly where releasing an index leaves a body free, where
    * cancellation leaves it a few ulps either side of zero. Not for the
@@ -132,7 +133,9 @@ namespace unilateral::lcp
    * semidefinite beyond round-off.
    */
   void
-  clamp_rounded_diagonal(DenseMatrix &schur, const Vector &original_diagonal);
+  clamp_rounded_diagonal(DenseMatrix              &schur,
+                         const SparseMatrix       &A,
+                         const std::vector<Index> &indices);
 
   /// Where each diagonal entry of @p A sits in its value array (A
   /// compressed, every diagonal entry stored: what check_and_normalise()

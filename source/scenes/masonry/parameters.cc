@@ -372,11 +372,10 @@ namespace unilateral::masonry
                     "must be a finite number");
     const std::vector<double> direction =
       get_doubles(prm, boundary_section, "Gravity direction");
-    gravity_direction_text = prm.get("Gravity direction");
-    gravity_direction      = {{direction.at(0),
-                               direction.at(1),
+    gravity_direction   = {{direction.at(0),
+                            direction.at(1),
                           direction.size() > 2 ? direction[2] : 0.0}};
-    const double length    = std::hypot(gravity_direction[0],
+    const double length = std::hypot(gravity_direction[0],
                                      gravity_direction[1],
                                      gravity_direction[2]);
     check_parameter(length > 0 && std::isfinite(length),
@@ -627,7 +626,8 @@ namespace unilateral::masonry
                       boundary.gravity_direction[2] == 0,
                     boundary_section,
                     "Gravity direction",
-                    boundary.gravity_direction_text,
+                    prm.get({"Masonry", "Boundary conditions"},
+                            "Gravity direction"),
                     "has a z component in 2D; give x, y");
   }
 } // namespace unilateral::masonry

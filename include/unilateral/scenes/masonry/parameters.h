@@ -91,8 +91,6 @@ namespace unilateral::masonry
     /// The body force is density * gravity * the direction made unit.
     double                gravity = 1.0;
     std::array<double, 3> gravity_direction{{0.0, -1.0, 0.0}};
-    /// As the parameter file gives it (for messages).
-    std::string gravity_direction_text = "0, -1";
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
