@@ -1,5 +1,7 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
+#include <unilateral/base/pretouch.h>
+#include <unilateral/base/ranks.h>
 #include <unilateral/base/text.h>
 #include <unilateral/base/version.h>
 #include <unilateral/lcp/io.h>
@@ -220,6 +222,13 @@ namespace unilateral
     if (context.writes_files)
       summary.write_file((context.output_directory / "summary.json").string());
     return report;
+  }
+
+  void
+  Scene::pretouch(const RunContext &context, const double bytes) const
+  {
+    if (ranks::n_ranks() == 1 && large(context.parameter_file))
+      memory::pretouch_in_background(bytes);
   }
 
   std::string

@@ -182,6 +182,16 @@ namespace unilateral
     add_summary(JsonObject &summary) const;
     /// @}
 
+    /**
+     * Fault in @p bytes of memory on the second core while the scene builds
+     * its problem, for a serial run that large() calls large (under mpirun
+     * the ranks take every core): memory::pretouch_in_background() says
+     * why. A scene calls it as soon as it knows its size, with less than its
+     * solve's peak memory, so that the peak does not grow.
+     */
+    void
+    pretouch(const RunContext &context, double bytes) const;
+
     /// The LCP the scene builds, and its solution.
     lcp::Problem  lcp_problem;
     lcp::Solution lcp_solution;

@@ -214,6 +214,11 @@ namespace unilateral::masonry
       discretisation.dof_handler.distribute_dofs(*discretisation.fe);
       problem_sizes.n_dofs = discretisation.dof_handler.n_dofs();
     }
+    // Less than the walls' peak per DOF, with every method, so that the
+    // peak does not grow (the rate: benchmarks/masonry_tables/README.md,
+    // "Pages faulted in on the idle core").
+    constexpr double pretouched_bytes_per_dof = 2000;
+    pretouch(context, pretouched_bytes_per_dof * problem_sizes.n_dofs);
     context.stage(registered_name,
                   std::to_string(problem_sizes.n_dofs) +
                     " DOFs; detecting contacts");

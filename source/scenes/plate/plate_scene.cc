@@ -67,10 +67,16 @@ namespace unilateral::plate
   }
 
   void
-  PlateScene::setup_system(RunContext &)
+  PlateScene::setup_system(RunContext &context)
   {
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
+    // Less than the plate's peak per DOF with every method (tnnmg's is the
+    // least), so that the peak does not grow (the rate:
+    // benchmarks/plate_multigrid/README.md, "Pages faulted in on the idle
+    // core").
+    constexpr double pretouched_bytes_per_dof = 600;
+    pretouch(context, pretouched_bytes_per_dof * dof_handler.n_dofs());
 
     const dealii::ComponentMask clamped(
       {true, true, true, parameters.geometry.clamp_twist});

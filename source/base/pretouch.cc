@@ -1,0 +1,98 @@
+#include <unilateral/base/memory.h>
+#include <unilateral/base/pretouch.h>
+
+#if defined(__GLIBC__)
+#  include <malloc.h>
+#endif
+
+#include <atomic>
+#include <cstddef>
+#include <cstdlib>
+#include <thread>
+#include <vector>
+
+namespace unilateral::memory
+{
+  namespace
+  {
+    // Small enough that the set-up's own allocations, made while the
+    // thread works, find freed chunks to reuse; large enough that the
+    // allocator's bookkeeping stays negligible.
+    constexpr std::size_t chunk_bytes = std::size_t(64) << 20;
+    constexpr std::size_t page_bytes  = 4096;
+
+    // The background thread and its chunks; joined when the process ends.
+    class Pretouch
+    {
+    public:
+      ~Pretouch()
+      {
+        stop = true;
+        if (thread.joinable())
+          thread.join();
+      }
+
+      bool
+      started() const
+      {
+        return thread.joinable();
+      }
+
+      void
+      start(const std::size_t n_chunks)
+      {
+        // Allocated here, by the main thread, so that the chunks belong to
+        // the heap (glibc's main arena) that the run's allocations use.
+        for (std::size_t i = 0; i < n_chunks; ++i)
+          if (void *chunk = std::malloc(chunk_bytes))
+            chunks.push_back(static_cast<char *>(chunk));
+        thread = std::thread([this]() { touch_and_free(); });
+      }
+
+    private:
+      void
+      touch_and_free()
+      {
+        for (char *chunk : chunks)
+          {
+            if (!stop)
+              for (std::size_t offset = 0; offset < chunk_bytes;
+                   offset += page_bytes)
+                static_cast<volatile char *>(chunk)[offset] = 0;
+            std::free(chunk);
+          }
+      }
+
+      std::vector<char *> chunks;
+      std::atomic<bool>   stop{false};
+      std::thread         thread;
+    };
+
+    Pretouch &
+    pretouch()
+    {
+      static Pretouch instance;
+      return instance;
+    }
+  } // namespace
+
+  void
+  pretouch_in_background(const double bytes)
+  {
+#if defined(__GLIBC__)
+    if (pretouch().started())
+      return;
+    const double touched = std::min(bytes, available() / 4);
+    if (!(touched >= chunk_bytes))
+      return;
+    // Freed memory stays mapped, and large blocks come from the heap too:
+    // otherwise the touched chunks would be returned to the system at once
+    // and every factor mapped afresh.
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, -1);
+    pretouch().start(static_cast<std::size_t>(touched / chunk_bytes));
+#else
+    (void)bytes;
+#endif
+  }
+} // namespace unilateral::memory
