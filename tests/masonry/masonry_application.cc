@@ -158,6 +158,32 @@ main()
               << err.str();
   }
 
+  {
+    // A support whose region holds no node of its boundary (here a typo:
+    // x > 2 on a unit wall) leaves the right half of the wall unsupported.
+    // The run cannot succeed, and until 2026-11-27 it said only that the
+    // wall has no equilibrium; now the set-up notes the support on stdout
+    // and the failure line names it.
+    const std::string file = "nowhere.prm";
+    std::ofstream(file) << masonry_prm(
+      "  set Blocks per side = 4\n"
+      "  subsection Boundary conditions\n"
+      "    set Normal displacement zero = left, right, base where x > 2\n"
+      "  end\n");
+    std::vector<std::string> arguments = {"unilateral", file};
+    char              *argv[] = {arguments[0].data(), arguments[1].data()};
+    std::ostringstream out, err;
+    const int          code = unilateral::run_application(2, argv, out, err);
+    const std::string  named =
+      "'Normal displacement zero' = 'base where x > 2' acts on no node";
+    std::cout << "A support acting nowhere (base where x > 2): exit code "
+              << code << "; noted on stdout: "
+              << (out.str().find(named) != std::string::npos ? "yes" : "no")
+              << "; named in the failure line: "
+              << (err.str().find(named) != std::string::npos ? "yes" : "no")
+              << "\n";
+  }
+
   std::string error;
   {
     // The right half of the base moved sideways by a shift s: for s >= 1

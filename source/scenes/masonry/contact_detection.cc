@@ -435,6 +435,7 @@ namespace unilateral::masonry
             static_cast<unsigned int>(result.support_names.size());
           result.support_names.push_back(support.name);
         }
+    std::vector<bool> acting(result.support_names.size(), false);
     for (std::size_t f = 0; f < faces.size(); ++f)
       for (const Support<dim> *support :
            supports.on_boundary(faces[f].boundary))
@@ -448,6 +449,7 @@ namespace unilateral::masonry
                 as_tensor<dim>(result.node_position[node]));
               if (!supports.acts_at(*support, p, faces[f].vertices))
                 continue;
+              acting[index]          = true;
               NodeConditions<dim> &c = conditions[node];
               if (support->kind == Kind::held)
                 {
@@ -488,6 +490,11 @@ namespace unilateral::masonry
                 }
             }
         }
+
+    for (const Support<dim> &support : supports.list)
+      if (support.kind != Kind::traction && support.region != nullptr &&
+          !acting[support_index.at(&support)])
+        result.supports_acting_nowhere.push_back(support.description);
 
     // Resolve: held nodes take nothing else; a roller removes Signorini
     // in its direction.

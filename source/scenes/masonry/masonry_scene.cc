@@ -230,7 +230,13 @@ namespace unilateral::masonry
                              problem_sizes.cell_size,
                            problem_sizes.cell_size);
     const ContactSet<dim> &contacts = state->contacts;
-    state->change                   = std::make_unique<ChangeOfVariables<dim>>(
+    if (context.out != nullptr)
+      for (const std::string &support : contacts.supports_acting_nowhere)
+        *context.out << "  " << registered_name << ": note: " << support
+                     << " acts on no node (its region holds no point of "
+                        "that boundary)"
+                     << std::endl;
+    state->change = std::make_unique<ChangeOfVariables<dim>>(
       problem_sizes.n_dofs,
       contacts.node_dofs,
       contacts.held,
@@ -740,16 +746,21 @@ namespace unilateral::masonry
   {
     const std::string structure =
       state && !state->mesh_file.empty() ? "the structure" : "the wall";
+    // A support that acts nowhere is the likeliest cause of both.
+    std::string unused;
+    if (state)
+      for (const std::string &support : state->contacts.supports_acting_nowhere)
+        unused += "; " + support + " acts on no node";
     if (report.status == lcp::Status::infeasible)
       return structure +
              " has no equilibrium: its supports and joints cannot "
-             "carry the loads (" +
-             report.message + ")";
+             "carry the loads" +
+             unused + " (" + report.message + ")";
     if (report.status == lcp::Status::singular)
       return "the solver found no configuration in which every block is "
              "held by a support or a closed joint: " +
-             structure + " has no equilibrium, or a block can move freely (" +
-             report.message + ")";
+             structure + " has no equilibrium, or a block can move freely" +
+             unused + " (" + report.message + ")";
     return Scene::failure_description(report);
   }
 

@@ -220,7 +220,11 @@ namespace unilateral::masonry
           support.kind       = group.kind;
           support.prescribed = group.prescribed;
           support.name       = selection.boundary;
-          support.boundary   = boundary_id(selection, names, group.parameter);
+          support.description =
+            std::string("'") + group.parameter + "' = '" + selection.boundary +
+            (selection.region.empty() ? "" : " where " + selection.region) +
+            "'";
+          support.boundary = boundary_id(selection, names, group.parameter);
           if (!selection.region.empty())
             support.region =
               parse_function<dim>({selection.region},

@@ -55,6 +55,9 @@ namespace unilateral::masonry
     dealii::types::boundary_id boundary   = 0;
     /// The boundary as the parameter file names it.
     std::string name;
+    /// The parameter and its item, for messages ("'Signorini' = 'base
+    /// where x < s'").
+    std::string description;
     /// Where on the boundary; null: everywhere.
     std::shared_ptr<const dealii::Function<dim>> region;
   };
