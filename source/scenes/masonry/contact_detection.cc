@@ -81,10 +81,6 @@ namespace unilateral::masonry
       dealii::Tensor<1, dim>    normal; ///< outward
       std::vector<unsigned int> nodes;
       double                    diameter;
-      /// How far the cell reaches behind the face, along the normal: twice
-      /// the distance of the cell's centre from the face's plane (exact
-      /// for a parallelepiped, 2/3 of the height for a simplex).
-      double depth;
     };
 
     /// A unit normal from the face's vertices, pointing away from the
@@ -375,8 +371,6 @@ namespace unilateral::masonry
                                            record.block,
                                            tolerance);
           record.diameter = face->diameter();
-          record.depth =
-            2 * std::abs((cell->center() - record.vertices[0]) * record.normal);
           face_dofs.resize(fe.n_dofs_per_face(f));
           face->get_dof_indices(face_dofs);
           for (unsigned int i = 0; i < face_dofs.size(); ++i)
@@ -698,15 +692,7 @@ namespace unilateral::masonry
               {
                 const ClassFace &q        = by_class[k][*it];
                 const double     distance = q.offset - p.offset;
-                // Two faces closer than either cell is deep may be meant to
-                // touch; a face as far away as a cell's depth lies behind
-                // another cell (the next leaf but one of a wall of thin
-                // leaves), not against this face.
-                const double pair_near =
-                  std::min(near,
-                           0.5 * std::min(faces[p.face].depth,
-                                          faces[q.face].depth));
-                if (std::abs(distance) > pair_near ||
+                if (std::abs(distance) > near ||
                     faces[p.face].block == faces[q.face].block ||
                     std::min(p.hi, q.hi) - std::max(p.lo, q.lo) <= tolerance)
                   continue;
@@ -730,7 +716,7 @@ namespace unilateral::masonry
                            .cell->face(faces[p.face].face_no)
                            ->center()
                       << "); move them together (to within " << tolerance
-                      << ") or further apart (more than " << pair_near << ")";
+                      << ") or further apart (more than " << near << ")";
                     throw InputError(message.str());
                   }
                 // Matching nodes: every node of either face inside the

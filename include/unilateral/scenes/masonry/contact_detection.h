@@ -38,8 +38,7 @@ namespace unilateral::masonry
    *    none). Nodes inside the other face without a coincident partner are
    *    an error (node-to-node contact needs matching nodes), and so are
    *    parallel opposite overlapping faces at a distance between the
-   *    tolerance and 1e-2 times the cell size, or half the depth of the
-   *    thinner of their cells if that is less (a gap or an overlap).
+   *    tolerance and 1e-2 times the cell size (a gap or an overlap).
    */
   template <int dim>
   struct ContactSet
