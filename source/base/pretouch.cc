@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdlib>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -20,6 +21,11 @@ namespace unilateral::memory
     // allocator's bookkeeping stays negligible.
     constexpr std::size_t chunk_bytes = std::size_t(64) << 20;
     constexpr std::size_t page_bytes  = 4096;
+    // Below this the gain is lost in the noise, and the set-up's
+    // allocations, placed above chunks still held, let the peak grow (the
+    // figures: benchmarks/masonry_tables/README.md, "Pages faulted in on
+    // the idle core").
+    constexpr double smallest_bytes = 1e9;
 
     // The background thread and its chunks; joined when the process ends.
     class Pretouch
@@ -46,7 +52,18 @@ namespace unilateral::memory
         for (std::size_t i = 0; i < n_chunks; ++i)
           if (void *chunk = std::malloc(chunk_bytes))
             chunks.push_back(static_cast<char *>(chunk));
-        thread = std::thread([this]() { touch_and_free(); });
+        try
+          {
+            thread = std::thread([this]() { touch_and_free(); });
+          }
+        catch (const std::system_error &)
+          {
+            // No thread to be had (a process or thread limit): the run
+            // goes on without, as it would without glibc.
+            for (char *chunk : chunks)
+              std::free(chunk);
+            chunks.clear();
+          }
       }
 
     private:
@@ -83,7 +100,7 @@ namespace unilateral::memory
     if (pretouch().started())
       return;
     const double touched = std::min(bytes, available() / 4);
-    if (!(touched >= chunk_bytes))
+    if (!(touched >= smallest_bytes))
       return;
     // Freed memory stays mapped, and large blocks come from the heap too:
     // otherwise the touched chunks would be returned to the system at once

@@ -184,6 +184,30 @@ main()
               << "\n";
   }
 
+  {
+    // A traction whose region holds no node of the top drops the load: the
+    // run is right for the loads it has, and the set-up says which one
+    // acts nowhere.
+    const std::string file = "traction_nowhere.prm";
+    std::ofstream(file) << masonry_prm(
+      "  set Blocks per side = 4\n"
+      "  subsection Boundary conditions\n"
+      "    set Traction boundaries = top where x > 2\n"
+      "    set Traction = 0; -100\n"
+      "  end\n");
+    std::vector<std::string> arguments = {"unilateral", file};
+    char              *argv[] = {arguments[0].data(), arguments[1].data()};
+    std::ostringstream out, err;
+    const int          code = unilateral::run_application(2, argv, out, err);
+    std::cout << "A traction acting nowhere (top where x > 2): exit code "
+              << code << "; noted on stdout: "
+              << (out.str().find("'Traction boundaries' = 'top where x > 2' "
+                                 "acts on no node") != std::string::npos ?
+                    "yes" :
+                    "no")
+              << "\n";
+  }
+
   std::string error;
   {
     // The right half of the base moved sideways by a shift s: for s >= 1

@@ -2,7 +2,8 @@
 // own and leaves it to the run (base/pretouch.h): the process's resident
 // memory grows by what was asked, without the caller touching anything, and
 // a later allocation of that size reuses it instead of growing the process
-// again. A second call does nothing (once per process).
+// again. Below 1 GB nothing is touched; a second call does nothing (once per
+// process).
 #include <unilateral/base/pretouch.h>
 
 #include "../test_tools.h"
@@ -52,25 +53,31 @@ namespace
 int
 main()
 {
-  const double start = resident();
+  const double small = resident();
   unilateral::memory::pretouch_in_background(512 * megabyte);
-  test_tools::verdict("the thread faults in 512 MB",
-                      grows_by(start, 500 * megabyte));
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  test_tools::verdict("512 MB, below the 1 GB minimum: nothing is touched",
+                      resident() - small < 32 * megabyte);
+
+  const double start = resident();
+  unilateral::memory::pretouch_in_background(1200 * megabyte);
+  test_tools::verdict("the thread faults in 1200 MB",
+                      grows_by(start, 1150 * megabyte));
   // The last chunk is freed right after it is touched.
   std::this_thread::sleep_for(std::chrono::seconds(1));
 
   const double      before = resident();
-  const std::size_t bytes  = 400 * megabyte;
+  const std::size_t bytes  = 1000 * megabyte;
   char *const       block  = static_cast<char *>(std::malloc(bytes));
   std::memset(block, 1, bytes);
   const double growth = resident() - before;
-  test_tools::verdict("a 400 MB allocation afterwards reuses it (the process "
-                      "grows by less than 32 MB)",
+  test_tools::verdict("a 1000 MB allocation afterwards reuses it (the "
+                      "process grows by less than 32 MB)",
                       growth < 32 * megabyte);
   std::free(block);
 
   const double again = resident();
-  unilateral::memory::pretouch_in_background(512 * megabyte);
+  unilateral::memory::pretouch_in_background(1200 * megabyte);
   std::this_thread::sleep_for(std::chrono::seconds(2));
   test_tools::verdict("a second call touches nothing more",
                       resident() - again < 32 * megabyte);

@@ -16,11 +16,12 @@ namespace unilateral::memory
    * here, as SuperLU_DIST, which PETSc loads, switches them off anyway), so
    * the next allocations reuse them. Memory checks count the touched free
    * heap as used, and release_free_heap() gives it back where memory runs
-   * short. At most a quarter of the memory available is touched, once per
-   * process; the thread stops, and frees what it has not touched, when the
-   * process ends. Measured: benchmarks/masonry_tables/README.md, "Design
-   * measurements", "Pages faulted in on the idle core". Does nothing
-   * without glibc.
+   * short. At most a quarter of the memory available is touched, and
+   * nothing below 1 GB, once per process; the thread stops, and frees what
+   * it has not touched, when the process ends; where no thread can be
+   * started, nothing is touched. Measured:
+   * benchmarks/masonry_tables/README.md, "Design measurements", "Pages
+   * faulted in on the idle core". Does nothing without glibc.
    */
   void
   pretouch_in_background(double bytes);

@@ -187,7 +187,8 @@ namespace unilateral
      * its problem, for a serial run that large() calls large (under mpirun
      * the ranks take every core): memory::pretouch_in_background() says
      * why. A scene calls it as soon as it knows its size, with less than its
-     * solve's peak memory, so that the peak does not grow.
+     * solve's peak memory, so that the peak does not grow (below 1 GB
+     * nothing is touched: there the peak did grow).
      */
     void
     pretouch(const RunContext &context, double bytes) const;

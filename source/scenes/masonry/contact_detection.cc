@@ -435,13 +435,22 @@ namespace unilateral::masonry
             static_cast<unsigned int>(result.support_names.size());
           result.support_names.push_back(support.name);
         }
-    std::vector<bool> acting(result.support_names.size(), false);
+    // Whether each support (tractions included) acts at some node.
+    std::set<const Support<dim> *> acting;
     for (std::size_t f = 0; f < faces.size(); ++f)
       for (const Support<dim> *support :
            supports.on_boundary(faces[f].boundary))
         {
           if (support->kind == Kind::traction)
-            continue;
+            {
+              for (const unsigned int node : faces[f].nodes)
+                if (supports.acts_at(*support,
+                                     dealii::Point<dim>(as_tensor<dim>(
+                                       result.node_position[node])),
+                                     faces[f].vertices))
+                  acting.insert(support);
+              continue;
+            }
           const unsigned int index = support_index.at(support);
           for (const unsigned int node : faces[f].nodes)
             {
@@ -449,7 +458,7 @@ namespace unilateral::masonry
                 as_tensor<dim>(result.node_position[node]));
               if (!supports.acts_at(*support, p, faces[f].vertices))
                 continue;
-              acting[index]          = true;
+              acting.insert(support);
               NodeConditions<dim> &c = conditions[node];
               if (support->kind == Kind::held)
                 {
@@ -492,8 +501,7 @@ namespace unilateral::masonry
         }
 
     for (const Support<dim> &support : supports.list)
-      if (support.kind != Kind::traction && support.region != nullptr &&
-          !acting[support_index.at(&support)])
+      if (support.region != nullptr && acting.count(&support) == 0)
         result.supports_acting_nowhere.push_back(support.description);
 
     // Resolve: held nodes take nothing else; a roller removes Signorini

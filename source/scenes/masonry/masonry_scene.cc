@@ -214,9 +214,10 @@ namespace unilateral::masonry
       discretisation.dof_handler.distribute_dofs(*discretisation.fe);
       problem_sizes.n_dofs = discretisation.dof_handler.n_dofs();
     }
-    // Less than the walls' peak per DOF, with every method, so that the
-    // peak does not grow (the rate: benchmarks/masonry_tables/README.md,
-    // "Pages faulted in on the idle core").
+    // Less than the walls' peak per DOF, so that the peak does not grow
+    // (measured where the touch reaches its 1 GB minimum, m >= 167 at
+    // r = 0; the rate: benchmarks/masonry_tables/README.md, "Pages faulted
+    // in on the idle core").
     constexpr double pretouched_bytes_per_dof = 2000;
     pretouch(context, pretouched_bytes_per_dof * problem_sizes.n_dofs);
     context.stage(registered_name,
@@ -233,7 +234,7 @@ namespace unilateral::masonry
     if (context.out != nullptr)
       for (const std::string &support : contacts.supports_acting_nowhere)
         *context.out << "  " << registered_name << ": note: " << support
-                     << " acts on no node (its region holds no point of "
+                     << " acts on no node (its region holds no node of "
                         "that boundary)"
                      << std::endl;
     state->change = std::make_unique<ChangeOfVariables<dim>>(

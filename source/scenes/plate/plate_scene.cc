@@ -72,7 +72,8 @@ namespace unilateral::plate
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
     // Less than the plate's peak per DOF with every method (tnnmg's is the
-    // least), so that the peak does not grow (the rate:
+    // least), so that the peak does not grow; from about 650 x 650
+    // elements, where the touch reaches its 1 GB minimum (the rate:
     // benchmarks/plate_multigrid/README.md, "Pages faulted in on the idle
     // core").
     constexpr double pretouched_bytes_per_dof = 600;

@@ -79,9 +79,9 @@ namespace unilateral::masonry
 
     /// The supports' names ("base"), for the reactions.
     std::vector<std::string> support_names;
-    /// Supports restricted to a region that holds no node of their
-    /// boundary (a mistyped region, or one the wall's size leaves empty),
-    /// by their descriptions: the scene notes them.
+    /// Supports and tractions restricted to a region that holds no node
+    /// of their boundary (a mistyped region, or one the wall's size leaves
+    /// empty), by their descriptions: the scene notes them.
     std::vector<std::string> supports_acting_nowhere;
 
     unsigned int n_held_dofs        = 0;
