@@ -24,9 +24,12 @@
 namespace
 {
   // Run the application on a parameter file holding @p text; return the exit
-  // code, keep the error stream.
+  // code, keep the error stream (and the output stream, if asked).
   int
-  run(const std::string &name, const std::string &text, std::string &error)
+  run(const std::string &name,
+      const std::string &text,
+      std::string       &error,
+      std::string       *output = nullptr)
   {
     const std::string file = name + ".prm";
     std::ofstream(file) << text;
@@ -35,6 +38,8 @@ namespace
     std::ostringstream out, err;
     const int          code = unilateral::run_application(2, argv, out, err);
     error                   = err.str();
+    if (output != nullptr)
+      *output = out.str();
     return code;
   }
 
@@ -164,45 +169,43 @@ main()
     // The run cannot succeed, and until 2026-11-27 it said only that the
     // wall has no equilibrium; now the set-up notes the support on stdout
     // and the failure line names it.
-    const std::string file = "nowhere.prm";
-    std::ofstream(file) << masonry_prm(
-      "  set Blocks per side = 4\n"
-      "  subsection Boundary conditions\n"
-      "    set Normal displacement zero = left, right, base where x > 2\n"
-      "  end\n");
-    std::vector<std::string> arguments = {"unilateral", file};
-    char              *argv[] = {arguments[0].data(), arguments[1].data()};
-    std::ostringstream out, err;
-    const int          code = unilateral::run_application(2, argv, out, err);
-    const std::string  named =
+    std::string out, err;
+    const int   code =
+      run("nowhere",
+          masonry_prm(
+            "  set Blocks per side = 4\n"
+            "  subsection Boundary conditions\n"
+            "    set Normal displacement zero = left, right, base where x > 2\n"
+            "  end\n"),
+          err,
+          &out);
+    const std::string named =
       "'Normal displacement zero' = 'base where x > 2' acts on no node";
     std::cout << "A support acting nowhere (base where x > 2): exit code "
               << code << "; noted on stdout: "
-              << (out.str().find(named) != std::string::npos ? "yes" : "no")
+              << (out.find(named) != std::string::npos ? "yes" : "no")
               << "; named in the failure line: "
-              << (err.str().find(named) != std::string::npos ? "yes" : "no")
-              << "\n";
+              << (err.find(named) != std::string::npos ? "yes" : "no") << "\n";
   }
 
   {
     // A traction whose region holds no node of the top drops the load: the
     // run is right for the loads it has, and the set-up says which one
     // acts nowhere.
-    const std::string file = "traction_nowhere.prm";
-    std::ofstream(file) << masonry_prm(
-      "  set Blocks per side = 4\n"
-      "  subsection Boundary conditions\n"
-      "    set Traction boundaries = top where x > 2\n"
-      "    set Traction = 0; -100\n"
-      "  end\n");
-    std::vector<std::string> arguments = {"unilateral", file};
-    char              *argv[] = {arguments[0].data(), arguments[1].data()};
-    std::ostringstream out, err;
-    const int          code = unilateral::run_application(2, argv, out, err);
+    std::string out, err;
+    const int   code = run("traction_nowhere",
+                         masonry_prm("  set Blocks per side = 4\n"
+                                       "  subsection Boundary conditions\n"
+                                       "    set Traction boundaries = top "
+                                       "where x > 2\n"
+                                       "    set Traction = 0; -100\n"
+                                       "  end\n"),
+                         err,
+                         &out);
     std::cout << "A traction acting nowhere (top where x > 2): exit code "
               << code << "; noted on stdout: "
-              << (out.str().find("'Traction boundaries' = 'top where x > 2' "
-                                 "acts on no node") != std::string::npos ?
+              << (out.find("'Traction boundaries' = 'top where x > 2' "
+                           "acts on no node") != std::string::npos ?
                     "yes" :
                     "no")
               << "\n";
