@@ -33,17 +33,17 @@ namespace unilateral::memory
       return std::numeric_limits<double>::infinity();
     }
 
-    // The run's resident memory in bytes (0 if unknown).
-    double
-    resident()
-    {
-      std::ifstream statm("/proc/self/statm");
-      double        pages = 0, resident_pages = 0;
-      if (!(statm >> pages >> resident_pages))
-        return 0;
-      return resident_pages * static_cast<double>(sysconf(_SC_PAGESIZE));
-    }
   } // namespace
+
+  double
+  resident()
+  {
+    std::ifstream statm("/proc/self/statm");
+    double        pages = 0, resident_pages = 0;
+    if (!(statm >> pages >> resident_pages))
+      return 0;
+    return resident_pages * static_cast<double>(sysconf(_SC_PAGESIZE));
+  }
 
   double
   peak_resident()

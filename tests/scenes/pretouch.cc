@@ -4,6 +4,7 @@
 // a later allocation of that size reuses it instead of growing the process
 // again. Below 1 GB nothing is touched; a second call does nothing (once per
 // process).
+#include <unilateral/base/memory.h>
 #include <unilateral/base/pretouch.h>
 
 #include "../test_tools.h"
@@ -11,29 +12,11 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <string>
 #include <thread>
 
 namespace
 {
   constexpr double megabyte = 1 << 20;
-
-  // VmRSS of this process, in bytes.
-  double
-  resident()
-  {
-    std::ifstream status("/proc/self/status");
-    std::string   key;
-    double        kilobytes = 0;
-    while (status >> key)
-      {
-        if (key == "VmRSS:" && status >> kilobytes)
-          return 1024 * kilobytes;
-        std::getline(status, key);
-      }
-    return 0;
-  }
 
   // Wait (up to a minute) until the resident memory has grown by at least
   // @p growth over @p start; true if it has.
@@ -42,7 +25,7 @@ namespace
   {
     for (int i = 0; i < 600; ++i)
       {
-        if (resident() - start >= growth)
+        if (unilateral::memory::resident() - start >= growth)
           return true;
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
       }
@@ -53,32 +36,32 @@ namespace
 int
 main()
 {
-  const double small = resident();
+  const double small = unilateral::memory::resident();
   unilateral::memory::pretouch_in_background(512 * megabyte);
   std::this_thread::sleep_for(std::chrono::seconds(2));
   test_tools::verdict("512 MB, below the 1 GB minimum: nothing is touched",
-                      resident() - small < 32 * megabyte);
+                      unilateral::memory::resident() - small < 32 * megabyte);
 
-  const double start = resident();
+  const double start = unilateral::memory::resident();
   unilateral::memory::pretouch_in_background(1200 * megabyte);
   test_tools::verdict("the thread faults in 1200 MB",
                       grows_by(start, 1150 * megabyte));
   // The last chunk is freed right after it is touched.
   std::this_thread::sleep_for(std::chrono::seconds(1));
 
-  const double      before = resident();
+  const double      before = unilateral::memory::resident();
   const std::size_t bytes  = 1000 * megabyte;
   char *const       block  = static_cast<char *>(std::malloc(bytes));
   std::memset(block, 1, bytes);
-  const double growth = resident() - before;
+  const double growth = unilateral::memory::resident() - before;
   test_tools::verdict("a 1000 MB allocation afterwards reuses it (the "
                       "process grows by less than 32 MB)",
                       growth < 32 * megabyte);
   std::free(block);
 
-  const double again = resident();
+  const double again = unilateral::memory::resident();
   unilateral::memory::pretouch_in_background(1200 * megabyte);
   std::this_thread::sleep_for(std::chrono::seconds(2));
   test_tools::verdict("a second call touches nothing more",
-                      resident() - again < 32 * megabyte);
+                      unilateral::memory::resident() - again < 32 * megabyte);
 }

@@ -74,6 +74,11 @@ namespace unilateral
     void
     release_free_heap();
 
+    /// The process's resident memory now, in bytes; 0 if the kernel does
+    /// not say.
+    double
+    resident();
+
     /// The process's peak resident memory so far (VmHWM), in bytes; 0 if
     /// the kernel does not say.
     double

@@ -440,65 +440,57 @@ namespace unilateral::masonry
     for (std::size_t f = 0; f < faces.size(); ++f)
       for (const Support<dim> *support :
            supports.on_boundary(faces[f].boundary))
-        {
-          if (support->kind == Kind::traction)
-            {
-              for (const unsigned int node : faces[f].nodes)
-                if (supports.acts_at(*support,
-                                     dealii::Point<dim>(as_tensor<dim>(
-                                       result.node_position[node])),
-                                     faces[f].vertices))
-                  acting.insert(support);
+        for (const unsigned int node : faces[f].nodes)
+          {
+            const dealii::Point<dim> p(
+              as_tensor<dim>(result.node_position[node]));
+            if (!supports.acts_at(*support, p, faces[f].vertices))
               continue;
-            }
-          const unsigned int index = support_index.at(support);
-          for (const unsigned int node : faces[f].nodes)
-            {
-              const dealii::Point<dim> p(
-                as_tensor<dim>(result.node_position[node]));
-              if (!supports.acts_at(*support, p, faces[f].vertices))
-                continue;
-              acting.insert(support);
-              NodeConditions<dim> &c = conditions[node];
-              if (support->kind == Kind::held)
-                {
-                  std::array<double, dim> value{};
-                  if (support->prescribed)
+            acting.insert(support);
+            // A traction loads the face (the assembly integrates it); here
+            // it is only counted.
+            if (support->kind == Kind::traction)
+              continue;
+            const unsigned int   index = support_index.at(support);
+            NodeConditions<dim> &c     = conditions[node];
+            if (support->kind == Kind::held)
+              {
+                std::array<double, dim> value{};
+                if (support->prescribed)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    value[d] = supports.displacement->value(p, d);
+                if (c.held_support >= 0)
+                  {
+                    double difference = 0;
                     for (unsigned int d = 0; d < dim; ++d)
-                      value[d] = supports.displacement->value(p, d);
-                  if (c.held_support >= 0)
-                    {
-                      double difference = 0;
-                      for (unsigned int d = 0; d < dim; ++d)
-                        difference =
-                          std::max(difference,
-                                   std::abs(value[d] - c.held_value[d]));
-                      if (difference > tolerance)
-                        throw InputError(
-                          result.describe_node(node) + " lies on '" +
-                          result.support_names[c.held_support] + "' and '" +
-                          support->name +
-                          "', which prescribe different displacements "
-                          "there; let the two boundaries meet in different "
-                          "blocks or prescribe the same displacement");
-                      continue;
-                    }
-                  c.held_support = static_cast<int>(index);
-                  c.held_value   = value;
-                }
-              else if (support->kind == Kind::normal_zero)
-                {
-                  c.rollers.add(faces[f].normal, c.roller_support.size());
-                  c.roller_support.push_back(index);
-                }
-              else
-                {
-                  c.signorini.add(faces[f].normal, c.signorini_face.size());
-                  c.signorini_support.push_back(index);
-                  c.signorini_face.push_back(f);
-                }
-            }
-        }
+                      difference =
+                        std::max(difference,
+                                 std::abs(value[d] - c.held_value[d]));
+                    if (difference > tolerance)
+                      throw InputError(
+                        result.describe_node(node) + " lies on '" +
+                        result.support_names[c.held_support] + "' and '" +
+                        support->name +
+                        "', which prescribe different displacements "
+                        "there; let the two boundaries meet in different "
+                        "blocks or prescribe the same displacement");
+                    continue;
+                  }
+                c.held_support = static_cast<int>(index);
+                c.held_value   = value;
+              }
+            else if (support->kind == Kind::normal_zero)
+              {
+                c.rollers.add(faces[f].normal, c.roller_support.size());
+                c.roller_support.push_back(index);
+              }
+            else
+              {
+                c.signorini.add(faces[f].normal, c.signorini_face.size());
+                c.signorini_support.push_back(index);
+                c.signorini_face.push_back(f);
+              }
+          }
 
     for (const Support<dim> &support : supports.list)
       if (support.region != nullptr && acting.count(&support) == 0)

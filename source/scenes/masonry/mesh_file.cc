@@ -665,38 +665,15 @@ namespace unilateral::masonry
         block[c] = static_cast<unsigned int>(block_of_root[root]);
       }
 
-    // Within a block, cells share their nodes: two nodes of one block at
-    // one position (a node duplicated in the file) would cut a
-    // traction-free slit through it.
-    {
-      std::map<std::pair<unsigned int, std::array<long long, dim>>,
-               unsigned int>
-        node_at;
-      for (const auto &cell : file_mesh.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const auto [where, added] =
-              node_at.emplace(std::make_pair(block[cell->active_cell_index()],
-                                             grid_key<dim>(cell->vertex(v),
-                                                           spacing)),
-                              cell->vertex_index(v));
-            if (!added && where->second != cell->vertex_index(v))
-              {
-                std::ostringstream message;
-                message << "block " << block[cell->active_cell_index()]
-                        << " has two nodes at (" << cell->vertex(v)
-                        << "): cells of one block must share their nodes (a "
-                           "duplicated node cuts a slit into the block); "
-                           "merge them (gmsh: Coherence)";
-                fail(file_name, message.str());
-              }
-          }
-    }
-
     // The blocks' own vertices, and the boundary ids by face centre.
     std::vector<dealii::Point<dim>>                               vertices;
     std::vector<dealii::CellData<dim>>                            cells;
     std::map<std::pair<unsigned int, unsigned int>, unsigned int> new_vertex;
+    // Within a block, cells share their nodes: two nodes of one block at
+    // one position (a node duplicated in the file) would cut a
+    // traction-free slit through it.
+    std::map<std::pair<unsigned int, std::array<long long, dim>>, unsigned int>
+      node_at;
     std::map<std::array<long long, dim>,
              std::vector<
                std::pair<dealii::Point<dim>,
@@ -713,6 +690,20 @@ namespace unilateral::masonry
             auto       it  = new_vertex.find(key);
             if (it == new_vertex.end())
               {
+                if (!node_at
+                       .emplace(std::make_pair(
+                                  b, grid_key<dim>(cell->vertex(v), spacing)),
+                                cell->vertex_index(v))
+                       .second)
+                  {
+                    std::ostringstream message;
+                    message << "block " << b << " has two nodes at ("
+                            << cell->vertex(v)
+                            << "): cells of one block must share their nodes "
+                               "(a duplicated node cuts a slit into the "
+                               "block); merge them (gmsh: Coherence)";
+                    fail(file_name, message.str());
+                  }
                 it = new_vertex
                        .emplace(key, static_cast<unsigned int>(vertices.size()))
                        .first;
