@@ -150,11 +150,6 @@ namespace unilateral::masonry
         problem_sizes.n_blocks =
           static_cast<unsigned int>(blocks.tag_of_block.size());
         problem_sizes.block_height = 1;
-        double smallest            = std::numeric_limits<double>::max();
-        for (const auto &cell :
-             state->discretisation.triangulation.active_cell_iterators())
-          smallest = std::min(smallest, cell->minimum_vertex_distance());
-        problem_sizes.cell_size = smallest;
       }
     else
       {
@@ -186,6 +181,14 @@ namespace unilateral::masonry
       }
     const dealii::Triangulation<dim> &triangulation =
       state->discretisation.triangulation;
+    problem_sizes.smallest_cell_extent = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      problem_sizes.smallest_cell_extent =
+        std::min(problem_sizes.smallest_cell_extent,
+                 cell->minimum_vertex_distance());
+    // A mesh file has no h of its own: its smallest cell stands for it.
+    if (geometry.from_mesh_file)
+      problem_sizes.cell_size = problem_sizes.smallest_cell_extent;
     problem_sizes.n_cells = triangulation.n_active_cells();
     problem_sizes.gap =
       parameters.boundary.relative_gap * problem_sizes.block_height;
@@ -228,8 +231,8 @@ namespace unilateral::masonry
                            *state->discretisation.mapping,
                            state->supports,
                            parameters.geometry.coincidence_tolerance *
-                             problem_sizes.cell_size,
-                           problem_sizes.cell_size);
+                             problem_sizes.smallest_cell_extent,
+                           problem_sizes.smallest_cell_extent);
     const ContactSet<dim> &contacts = state->contacts;
     if (context.out != nullptr)
       for (const std::string &support : contacts.supports_acting_nowhere)
@@ -317,7 +320,7 @@ namespace unilateral::masonry
                                 parameters.tearing.largest_aspect_ratio,
                                 unit,
                                 parameters.geometry.coincidence_tolerance *
-                                  problem_sizes.cell_size,
+                                  problem_sizes.smallest_cell_extent,
                                 n_cut);
         if (n_cut > 0)
           context.stage(registered_name,

@@ -29,7 +29,11 @@ namespace unilateral::masonry
     unsigned int max_expansion_length = 0;
     double       block_height         = 0; ///< H (1 for a mesh file)
     double       cell_size            = 0; ///< h = H / 2^r (the smallest)
-    double       gap                  = 0; ///< g
+    /// The smallest distance between two vertices of a cell: the scale of
+    /// coincidence and nearness in contact detection (a built-in 3D wall's
+    /// leaves may be far thinner than h).
+    double smallest_cell_extent = 0;
+    double gap                  = 0; ///< g
   };
 
   /// One unilateral constraint after the solve.
