@@ -163,6 +163,7 @@ main()
               << err.str();
   }
 
+  std::string mistyped_note; // stdout of the next run
   {
     // A support whose region holds no node of its boundary (here a typo:
     // x > 2 on a unit wall) leaves the right half of the wall unsupported.
@@ -181,11 +182,43 @@ main()
           &out);
     const std::string named =
       "'Normal displacement zero' = 'base where x > 2' acts on no node";
+    mistyped_note = out;
     std::cout << "A support acting nowhere (base where x > 2): exit code "
               << code << "; noted on stdout: "
               << (out.find(named) != std::string::npos ? "yes" : "no")
               << "; named in the failure line: "
               << (err.find(named) != std::string::npos ? "yes" : "no") << "\n";
+  }
+
+  {
+    // The whole base in Signorini contact ('Signorini part of the base' =
+    // 1 puts s at its right end): the default 'base where x > s' is empty
+    // by the user's choice, and the note says so instead of suggesting a
+    // mistyped region (which the case above is told).
+    std::string out, err;
+    const int   code = run("nowhere_by_choice",
+                         masonry_prm("  set Blocks per side = 4\n"
+                                       "  subsection Boundary conditions\n"
+                                       "    set Signorini part of the base = 1\n"
+                                       "  end\n"),
+                         err,
+                         &out);
+    std::cout << "The whole base Signorini: exit code " << code
+              << "; the note on 'base where x > s' gives the reason: "
+              << (out.find("'Normal displacement zero' = 'base where x > s' "
+                           "acts on no node (as 'Signorini part of the "
+                           "base' = 1 puts s at the base's right end)") !=
+                      std::string::npos ?
+                    "yes" :
+                    "no")
+              << "; the mistyped region's note says its region holds no "
+                 "node: "
+              << (mistyped_note.find("acts on no node (its region holds no "
+                                     "node of that boundary)") !=
+                      std::string::npos ?
+                    "yes" :
+                    "no")
+              << "\n";
   }
 
   {

@@ -18,10 +18,32 @@
 #include <filesystem>
 #include <iomanip>
 #include <ostream>
+#include <regex>
 #include <sstream>
 
 namespace unilateral::masonry
 {
+  namespace
+  {
+    // Why the support @p description ("'Signorini' = 'base where x < s'")
+    // acts on no node. 'Signorini part of the base' = 0 or 1 puts s at an
+    // end of the base, and a region that compares with s is then empty by
+    // the user's own choice, not by a mistyped region.
+    std::string
+    why_acting_nowhere(const std::string &description,
+                       const double       signorini_fraction)
+    {
+      static const std::regex compares_with_s(R"(where.*\bs\b)");
+      if ((signorini_fraction == 0 || signorini_fraction == 1) &&
+          std::regex_search(description, compares_with_s))
+        return std::string(" (as 'Signorini part of the base' = ") +
+               (signorini_fraction == 0 ? "0" : "1") +
+               " puts s at the base's " +
+               (signorini_fraction == 0 ? "left" : "right") + " end)";
+      return " (its region holds no node of that boundary)";
+    }
+  } // namespace
+
   template <int dim>
   void
   MasonryScene<dim>::declare_parameters(dealii::ParameterHandler &prm)
@@ -236,10 +258,11 @@ namespace unilateral::masonry
     const ContactSet<dim> &contacts = state->contacts;
     if (context.out != nullptr)
       for (const std::string &support : contacts.supports_acting_nowhere)
-        *context.out << "  " << registered_name << ": note: " << support
-                     << " acts on no node (its region holds no node of "
-                        "that boundary)"
-                     << std::endl;
+        *context.out
+          << "  " << registered_name << ": note: " << support
+          << " acts on no node"
+          << why_acting_nowhere(support, parameters.boundary.signorini_fraction)
+          << std::endl;
     state->change = std::make_unique<ChangeOfVariables<dim>>(
       problem_sizes.n_dofs,
       contacts.node_dofs,
