@@ -11,6 +11,7 @@
 #include <deal.II/base/timer.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -250,10 +251,15 @@ namespace unilateral
     std::string
     memory_fix(const Scene &scene)
     {
+      const bool address_space_limited =
+        std::isfinite(memory::address_space_limit());
       return std::string(memory::limit_binds() ?
                            "raise 'Memory limit' (it is below the machine's "
                            "available memory) or " :
                            "") +
+             (address_space_limited ?
+                "raise the address-space limit ('ulimit -v') or " :
+                "") +
              "make the problem smaller (" + scene.size_parameters() + ")";
     }
 
@@ -490,9 +496,14 @@ namespace unilateral
         }
       catch (const std::bad_alloc &)
         {
-          failure = "out of memory (an allocation failed, " +
-                    memory::format(memory::available()) + " left); " +
-                    memory_fix(*scene);
+          failure =
+            "out of memory (an allocation failed, " +
+            (std::isfinite(memory::address_space_limit()) ?
+               "with " + memory::format(memory::address_space()) + " of the " +
+                 memory::format(memory::address_space_limit()) +
+                 " address space that 'ulimit -v' allows in use" :
+               memory::format(memory::available()) + " left") +
+            "); " + memory_fix(*scene);
         }
       catch (const std::exception &error)
         {

@@ -24,6 +24,7 @@ import argparse
 import json
 import math
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -94,14 +95,17 @@ CASES = []
 
 
 def case(scene, name, expect, text=None, args=None, files=None,
-         fragments=(), codes=(0,), honest=(), check=None, setup=None):
+         fragments=(), codes=(0,), honest=(), check=None, setup=None,
+         address_space=None):
     """expect: 'error' (bad input), 'valid' (exit code in codes) or
     'answer' (valid input whose answer @p check judges; a one-line refusal
-    is honest too). honest: exit codes that are WEAK instead of WRONG."""
+    is honest too). honest: exit codes that are WEAK instead of WRONG.
+    address_space: the run's 'ulimit -v' in bytes (None: unlimited)."""
     CASES.append(dict(scene=scene, name=name, expect=expect, text=text,
                       args=args if args is not None else ["case.prm"],
                       files=files or {}, fragments=fragments, codes=codes,
-                      honest=honest, check=check, setup=setup))
+                      honest=honest, check=check, setup=setup,
+                      address_space=address_space))
 
 
 # --------------------------------------------------------------------------
@@ -318,6 +322,13 @@ def define_cases():
          text=masonry(m=300, top="set Memory limit = 0.2\n"),
          fragments=["Memory limit", "Blocks per side"],
          check=memory_limit_first)
+    # An address-space limit ('ulimit -v', as batch systems set) below what
+    # the wall needs: an allocation fails at some point of the run, and the
+    # message must name the limit, not the machine's free memory.
+    for limit_gb in [1.2, 2.0]:
+        case("masonry", f"m = 225 under ulimit -v {limit_gb} GB", "error",
+             text=masonry(m=225), fragments=["ulimit -v", "Blocks per side"],
+             address_space=int(limit_gb * 1e9))
     for name, body, fragments in [
             ("Refinement = -1", "  set Refinement = -1\n", ["Refinement"]),
             ("Refinement = 13", "  set Refinement = 13\n", ["Refinement"]),
@@ -558,8 +569,12 @@ def run_case(work, number, spec):
     if spec["setup"]:
         spec["setup"](directory)
     try:
-        process = subprocess.run([EXECUTABLE] + spec["args"], cwd=directory,
-                                 capture_output=True, timeout=TIMEOUT)
+        limit = spec["address_space"]
+        process = subprocess.run(
+            [EXECUTABLE] + spec["args"], cwd=directory, capture_output=True,
+            timeout=TIMEOUT,
+            preexec_fn=None if limit is None else
+            lambda: resource.setrlimit(resource.RLIMIT_AS, (limit, limit)))
         code = process.returncode
         stdout = process.stdout.decode(errors="replace")
         stderr = process.stderr.decode(errors="replace")

@@ -1,11 +1,13 @@
 #include <unilateral/base/memory.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 #if defined(__GLIBC__)
 #  include <malloc.h>
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -43,6 +45,26 @@ namespace unilateral::memory
     if (!(statm >> pages >> resident_pages))
       return 0;
     return resident_pages * static_cast<double>(sysconf(_SC_PAGESIZE));
+  }
+
+  double
+  address_space_limit()
+  {
+    rlimit limit_of_process{};
+    if (getrlimit(RLIMIT_AS, &limit_of_process) != 0 ||
+        limit_of_process.rlim_cur == RLIM_INFINITY)
+      return std::numeric_limits<double>::infinity();
+    return static_cast<double>(limit_of_process.rlim_cur);
+  }
+
+  double
+  address_space()
+  {
+    std::ifstream statm("/proc/self/statm");
+    double        pages = 0;
+    if (!(statm >> pages))
+      return 0;
+    return pages * static_cast<double>(sysconf(_SC_PAGESIZE));
   }
 
   double
@@ -112,6 +134,10 @@ namespace unilateral::memory
             << format(left) << " is left"
             << (limit > 0 ? " under 'Memory limit' = " + format(limit) :
                             std::string(" on this machine"));
+    if (std::isfinite(address_space_limit()))
+      message << " (the address space is limited to "
+              << format(address_space_limit()) << " by 'ulimit -v', "
+              << format(address_space()) << " of it in use)";
     throw OutOfMemory(message.str());
   }
 

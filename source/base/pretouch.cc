@@ -5,6 +5,7 @@
 #  include <malloc.h>
 #endif
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdlib>
@@ -99,7 +100,11 @@ namespace unilateral::memory
 #if defined(__GLIBC__)
     if (pretouch().started())
       return;
-    const double touched = std::min(bytes, available() / 4);
+    // The address space the chunks take is reused by the run, but held
+    // while the set-up allocates beside them: under 'ulimit -v' a quarter
+    // of what is left, as of the memory.
+    const double touched = std::min(
+      {bytes, available() / 4, (address_space_limit() - address_space()) / 4});
     if (!(touched >= smallest_bytes))
       return;
     // Freed memory stays mapped, and large blocks come from the heap too:

@@ -79,6 +79,21 @@ namespace unilateral
     double
     resident();
 
+    /**
+     * The soft limit on the process's address space ('ulimit -v',
+     * RLIMIT_AS) in bytes; infinite if none is set. It is not part of
+     * available(): the address space counts freed heap memory, which the
+     * run reuses, so a check against it would refuse runs that fit. It is
+     * named where an allocation fails, and bounds the pre-touch.
+     */
+    double
+    address_space_limit();
+
+    /// The address space the process has mapped now (VmSize), in bytes; 0
+    /// if the kernel does not say.
+    double
+    address_space();
+
     /// The process's peak resident memory so far (VmHWM), in bytes; 0 if
     /// the kernel does not say.
     double
