@@ -207,7 +207,7 @@ main()
               << "; the note on 'base where x > s' gives the reason: "
               << (out.find("'Normal displacement zero' = 'base where x > s' "
                            "acts on no node (as 'Signorini part of the "
-                           "base' = 1 puts s at the base's right end)") !=
+                           "base' = 1 puts s at the structure's right end)") !=
                       std::string::npos ?
                     "yes" :
                     "no")
@@ -215,6 +215,25 @@ main()
                  "node: "
               << (mistyped_note.find("acts on no node (its region holds no "
                                      "node of that boundary)") !=
+                      std::string::npos ?
+                    "yes" :
+                    "no")
+              << "\n";
+    // A region that s at the end does not explain (x > s + 1 holds no node
+    // wherever s is) keeps the plain reason.
+    run("nowhere_not_by_choice",
+        masonry_prm("  set Blocks per side = 4\n"
+                    "  subsection Boundary conditions\n"
+                    "    set Signorini part of the base = 1\n"
+                    "    set Normal displacement zero = left, right, base "
+                    "where x > s + 1\n"
+                    "  end\n"),
+        err,
+        &out);
+    std::cout << "  and with 'base where x > s + 1' the note says its region "
+                 "holds no node: "
+              << (out.find("'base where x > s + 1' acts on no node (its "
+                           "region holds no node of that boundary)") !=
                       std::string::npos ?
                     "yes" :
                     "no")

@@ -26,20 +26,23 @@ namespace unilateral::masonry
   namespace
   {
     // Why the support @p description ("'Signorini' = 'base where x < s'")
-    // acts on no node. 'Signorini part of the base' = 0 or 1 puts s at an
-    // end of the base, and a region that compares with s is then empty by
-    // the user's own choice, not by a mistyped region.
+    // acts on no node. 'Signorini part of the base' = 0 or 1 puts s at the
+    // left or right end of the structure, and the built-in supports' region
+    // 'x < s' or 'x > s' is then empty by the user's own choice, not
+    // mistyped. Any other region (x > s + 1, x < s && y > 1) is judged as
+    // written.
     std::string
     why_acting_nowhere(const std::string &description,
                        const double       signorini_fraction)
     {
-      static const std::regex compares_with_s(R"(where.*\bs\b)");
-      if ((signorini_fraction == 0 || signorini_fraction == 1) &&
-          std::regex_search(description, compares_with_s))
-        return std::string(" (as 'Signorini part of the base' = ") +
-               (signorini_fraction == 0 ? "0" : "1") +
-               " puts s at the base's " +
-               (signorini_fraction == 0 ? "left" : "right") + " end)";
+      static const std::regex left_of_s(R"(where\s*x\s*<\s*s\s*'$)");
+      static const std::regex right_of_s(R"(where\s*x\s*>\s*s\s*'$)");
+      if (signorini_fraction == 0 && std::regex_search(description, left_of_s))
+        return " (as 'Signorini part of the base' = 0 puts s at the "
+               "structure's left end)";
+      if (signorini_fraction == 1 && std::regex_search(description, right_of_s))
+        return " (as 'Signorini part of the base' = 1 puts s at the "
+               "structure's right end)";
       return " (its region holds no node of that boundary)";
     }
   } // namespace
@@ -217,8 +220,12 @@ namespace unilateral::masonry
     constants.H     = problem_sizes.block_height;
     constants.g     = problem_sizes.gap;
     const double x0 = extent(triangulation, 0, false);
-    constants.s     = x0 + parameters.boundary.signorini_fraction *
-                         (extent(triangulation, 0, true) - x0);
+    const double x1 = extent(triangulation, 0, true);
+    // Exactly x1 at 1 (x0 + (x1 - x0) may round below it, and 'x > s' would
+    // then hold the right end's nodes).
+    constants.s = parameters.boundary.signorini_fraction == 1 ?
+                    x1 :
+                    x0 + parameters.boundary.signorini_fraction * (x1 - x0);
     state->supports =
       make_supports<dim>(parameters.boundary, state->boundaries, constants);
     state->loads.classes        = parameters.materials.classes;

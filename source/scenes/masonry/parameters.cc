@@ -150,7 +150,8 @@ namespace unilateral::masonry
                       "1",
                       Double(),
                       "3D built-in walls: the thickness in z, in units of H "
-                      "(> 0); each block gets round(depth / h) cells in z.");
+                      "(> 0); each block gets round(depth / h) cells in z, and "
+                      "must be at least 1e-6 h deep.");
     prm.declare_entry("Coincidence tolerance",
                       "1e-8",
                       Double(),
@@ -216,6 +217,21 @@ namespace unilateral::masonry
                     "Thickness",
                     thickness,
                     "must be > 0 (in units of the block height H)");
+    // A 3D built-in wall's boundaries are told apart by the faces' position
+    // to 1e-8 h: leaves far thinner than their cells are wide would have
+    // their front and back taken for one boundary, and such cells leave
+    // nothing double precision can solve (refused here, by name).
+    const double leaf_depth_over_h =
+      thickness / blocks_through_thickness * std::pow(2.0, refinement);
+    check_parameter(dimension != 3 || leaf_depth_over_h >= 1e-6,
+                    geometry_section,
+                    "Thickness",
+                    thickness,
+                    "over 'Blocks through the thickness' = " +
+                      std::to_string(blocks_through_thickness) +
+                      " gives leaves less than 1e-6 of a cell's width "
+                      "(h = H / 2^r) deep; make it larger or the blocks "
+                      "through the thickness fewer");
     coincidence_tolerance = prm.get_double("Coincidence tolerance");
     check_parameter(coincidence_tolerance > 0 && coincidence_tolerance <= 1e-3,
                     geometry_section,
