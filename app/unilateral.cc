@@ -4,6 +4,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -42,6 +43,30 @@ namespace
       execv("/proc/self/exe", argv);
   }
 
+  /**
+   * OpenBLAS starts its worker threads as it is loaded, and each maps a
+   * work buffer (128 MB in Debian's build) when it first needs one; if the
+   * mapping fails, the thread retries for ever (0.3.21): under an
+   * address-space limit ('ulimit -v') near the run's needs that is a core
+   * spinning through the run and a process that never ends, as its exit
+   * waits for the thread. So under such a limit the program restarts itself
+   * once, before any thread is started, with OPENBLAS_NUM_THREADS=1 (one
+   * buffer, in the main thread, which the run maps at its start:
+   * blas::prepare_for_address_space_limit). A thread count the user set is
+   * left alone.
+   */
+  void
+  restart_with_one_blas_thread_under_address_space_limit(char **argv)
+  {
+    rlimit limit{};
+    if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY ||
+        std::getenv("OPENBLAS_NUM_THREADS") != nullptr ||
+        std::getenv("OMP_NUM_THREADS") != nullptr)
+      return;
+    if (setenv("OPENBLAS_NUM_THREADS", "1", 1) == 0)
+      execv("/proc/self/exe", argv);
+  }
+
   /// Started by an MPI launcher (mpirun, mpiexec, srun): Open MPI, MPICH's
   /// Hydra and PMIx say so in the environment.
   bool
@@ -67,6 +92,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  restart_with_one_blas_thread_under_address_space_limit(argv);
   if (!launched_by_mpi())
     return unilateral::run_application(
       argc, argv, std::cout, std::cerr, [argv]() {

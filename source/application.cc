@@ -1,4 +1,5 @@
 #include <unilateral/application.h>
+#include <unilateral/base/blas_threads.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
 #include <unilateral/base/prefixed_lines.h>
@@ -55,17 +56,29 @@ namespace unilateral
       using std::runtime_error::runtime_error;
     };
 
+    /// A thread the system would not start (TBB reports pthread_create's
+    /// EAGAIN as a runtime error): a limit of the system on threads
+    /// ('ulimit -u') or on the address space their stacks take ('ulimit
+    /// -v'), not a defect of the program.
+    bool
+    thread_refused(const std::exception &error)
+    {
+      return std::string(error.what()).find("pthread_create") !=
+             std::string::npos;
+    }
+
     /// Whether @p error is not the input's fault: a check of the program's
     /// own consistency (std::logic_error), or a library's failure (CHOLMOD,
     /// MUMPS, PETSc and MPI report theirs as runtime errors). Not an
     /// InputError, nor what the system refused (files and folders:
-    /// std::system_error, the user's to fix), nor input a library refuses
-    /// (deal.II's mesh readers throw neither kind).
+    /// std::system_error, the user's to fix; threads), nor input a library
+    /// refuses (deal.II's mesh readers throw neither kind).
     bool
     is_internal(const std::exception &error)
     {
       if (dynamic_cast<const InputError *>(&error) != nullptr ||
-          dynamic_cast<const std::system_error *>(&error) != nullptr)
+          dynamic_cast<const std::system_error *>(&error) != nullptr ||
+          thread_refused(error))
         return false;
       return dynamic_cast<const std::logic_error *>(&error) != nullptr ||
              dynamic_cast<const std::runtime_error *>(&error) != nullptr;
@@ -251,13 +264,11 @@ namespace unilateral
     std::string
     memory_fix(const Scene &scene)
     {
-      const bool address_space_limited =
-        std::isfinite(memory::address_space_limit());
       return std::string(memory::limit_binds() ?
                            "raise 'Memory limit' (it is below the machine's "
                            "available memory) or " :
                            "") +
-             (address_space_limited ?
+             (memory::address_space_limit_binds() ?
                 "raise the address-space limit ('ulimit -v') or " :
                 "") +
              "make the problem smaller (" + scene.size_parameters() + ")";
@@ -444,6 +455,15 @@ namespace unilateral
       std::unique_ptr<Scene> scene = scene_info.create(prm);
       if (before_large_run && scene->large(parameter_file))
         before_large_run();
+      if (std::isfinite(memory::address_space_limit()) &&
+          !blas::prepare_for_address_space_limit())
+        throw InputError(
+          "the address-space limit ('ulimit -v') of " +
+          memory::format(memory::address_space_limit()) + " leaves " +
+          memory::format(memory::address_space_limit() -
+                         memory::address_space()) +
+          " free, too little to start the run (the BLAS library alone "
+          "takes 128 MB); raise the limit");
 
       context.output_directory =
         std::filesystem::path(
@@ -498,7 +518,7 @@ namespace unilateral
         {
           failure =
             "out of memory (an allocation failed, " +
-            (std::isfinite(memory::address_space_limit()) ?
+            (memory::address_space_limit_binds() ?
                "with " + memory::format(memory::address_space()) + " of the " +
                  memory::format(memory::address_space_limit()) +
                  " address space that 'ulimit -v' allows in use" :
@@ -509,6 +529,12 @@ namespace unilateral
         {
           failure  = one_line_message(error);
           internal = is_internal(error);
+          if (thread_refused(error))
+            failure +=
+              memory::address_space_limit_binds() ?
+                "; raise the address-space limit ('ulimit -v'): every "
+                "thread's stack takes some of it" :
+                "; the system limits the threads of a process ('ulimit -u')";
         }
       if (!failure.empty())
         {

@@ -343,6 +343,10 @@ def main():
                              "at these m (instead of the default list)")
     parser.add_argument("--ours", default=",".join(OURS),
                         help="our methods to run (comma-separated)")
+    parser.add_argument("--kkt-target", type=float, default=None,
+                        help="stop BQPIP as soon as its iterate's relative "
+                        "KKT residual is at most this (the driver's "
+                        "default: 1e-12); the walls' target is 1e-10")
     parser.add_argument("--theirs", default="",
                         help="comma-separated substrings of the external "
                              "solvers' labels to run (default: all)")
@@ -386,6 +390,8 @@ def main():
                 if args.theirs and not any(
                         part in label for part in args.theirs.split(",")):
                     continue
+                if args.kkt_target is not None and method == "tao_bqpip":
+                    options = options + ["kkt_target=%g" % args.kkt_target]
                 result = run_theirs(label, driver, method, options, directory,
                                     runs, args.timeout, args.repeats)
                 log("  %-28s %-24s solve %-9s KKT %s" % (

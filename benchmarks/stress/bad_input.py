@@ -325,10 +325,31 @@ def define_cases():
     # An address-space limit ('ulimit -v', as batch systems set) below what
     # the wall needs: an allocation fails at some point of the run, and the
     # message must name the limit, not the machine's free memory.
+    # (Named only where the limit binds: a limit above the machine's memory
+    # is not what a refusal ran into.)
     for limit_gb in [1.2, 2.0]:
         case("masonry", f"m = 225 under ulimit -v {limit_gb} GB", "error",
              text=masonry(m=225), fragments=["ulimit -v", "Blocks per side"],
              address_space=int(limit_gb * 1e9))
+    # Limits in the window where OpenBLAS cannot map its 128 MB buffer:
+    # until 2026-11-27 these spun at 100 % CPU for ever (in the
+    # factorisation, or at the exit after the answer was printed).
+    for m, limit_gb in [(4, 0.6), (100, 0.85), (100, 1.05)]:
+        case("masonry", f"m = {m} under ulimit -v {limit_gb} GB", "error",
+             text=masonry(m=m), fragments=["ulimit -v"],
+             address_space=int(limit_gb * 1e9))
+    case("masonry", "m = 100 under ulimit -v 1.1 GB", "answer",
+         text=masonry(m=100), check=summary_status("converged"),
+         address_space=int(1.1e9))
+    case("masonry", "m = 4 under ulimit -v 100 GB", "valid",
+         text=masonry(m=4), address_space=int(100e9))
+    case("masonry", "m = 300 with Memory limit = 0.2 GB under ulimit -v "
+         "100 GB", "error",
+         text=masonry(m=300, top="set Memory limit = 0.2\n"),
+         fragments=["Memory limit", "Blocks per side"],
+         check=lambda run: ("ulimit" not in run["stderr"],
+                            "names a limit that does not bind"),
+         address_space=int(100e9))
     for name, body, fragments in [
             ("Refinement = -1", "  set Refinement = -1\n", ["Refinement"]),
             ("Refinement = 13", "  set Refinement = 13\n", ["Refinement"]),
@@ -403,6 +424,12 @@ def define_cases():
          text=masonry("", top="subsection Solver\n"
                       "  set KKT tolerance = 0\nend\n"),
          fragments=["KKT tolerance"], honest=(2,))
+    # Leaves far thinner than wide: until 2026-11-27 the front and back
+    # were taken for one boundary ("front is not a boundary").
+    case("masonry", "3D Thickness = 1e-8", "error",
+         text=masonry("  set Dimension = 3\n  set Thickness = 1e-8\n",
+                      m=2),
+         fragments=["Thickness", "Blocks through the thickness"])
     case("masonry", "Maximum iterations = 1", "valid", codes=(0, 2),
          text=masonry("", top="subsection Solver\n"
                       "  set Maximum iterations = 1\nend\n"))

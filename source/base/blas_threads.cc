@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <vector>
 
 namespace unilateral::blas
 {
@@ -34,6 +35,55 @@ namespace unilateral::blas
   ScopedThreads::~ScopedThreads()
   {
     set_threads(before);
+  }
+
+  bool
+  prepare_for_address_space_limit()
+  {
+    if (threads() == 0)
+      return true;
+    // Room for the buffer and 8 MB; freed, it stays in the heap (glibc's
+    // trimming is off, see memory::release_free_heap), where OpenBLAS's
+    // allocation below finds it.
+    void *const room = std::malloc(std::size_t(136) << 20);
+    if (room == nullptr)
+      return false;
+    std::free(room);
+    using Gemm      = void (*)(const char *,
+                          const char *,
+                          const int *,
+                          const int *,
+                          const int *,
+                          const double *,
+                          const double *,
+                          const int *,
+                          const double *,
+                          const int *,
+                          const double *,
+                          double *,
+                          const int *);
+    const auto gemm = reinterpret_cast<Gemm>(dlsym(RTLD_DEFAULT, "dgemm_"));
+    if (gemm == nullptr)
+      return true;
+    // Large enough that OpenBLAS takes a buffer (and splits it over its
+    // threads where the user asked for several).
+    const int           n   = 256;
+    const double        one = 1, zero = 0;
+    std::vector<double> a(n * n, 1.0), c(n * n);
+    gemm("N",
+         "N",
+         &n,
+         &n,
+         &n,
+         &one,
+         a.data(),
+         &n,
+         a.data(),
+         &n,
+         &zero,
+         c.data(),
+         &n);
+    return true;
   }
 
   void

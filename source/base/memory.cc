@@ -67,6 +67,13 @@ namespace unilateral::memory
     return pages * static_cast<double>(sysconf(_SC_PAGESIZE));
   }
 
+  bool
+  address_space_limit_binds()
+  {
+    return std::isfinite(address_space_limit()) &&
+           address_space_limit() - address_space() < machine_available();
+  }
+
   double
   peak_resident()
   {
@@ -134,7 +141,7 @@ namespace unilateral::memory
             << format(left) << " is left"
             << (limit > 0 ? " under 'Memory limit' = " + format(limit) :
                             std::string(" on this machine"));
-    if (std::isfinite(address_space_limit()))
+    if (address_space_limit_binds())
       message << " (the address space is limited to "
               << format(address_space_limit()) << " by 'ulimit -v', "
               << format(address_space()) << " of it in use)";

@@ -33,6 +33,19 @@ namespace unilateral::blas
   };
 
   /**
+   * Ready OpenBLAS for a run under an address-space limit ('ulimit -v'):
+   * its work buffer mapped now. OpenBLAS maps a buffer (128 MB in Debian's
+   * build) the first time a thread needs one and keeps it; if the mapping
+   * fails it retries forever, without a message (0.3.21): a run would hang
+   * in its first factorisation near the limit. The program runs OpenBLAS
+   * on one thread under such a limit (app/unilateral.cc says why), whose
+   * one buffer is mapped here while there is room. Returns false if there
+   * is none (136 MB cannot be allocated). Does nothing with another BLAS.
+   */
+  bool
+  prepare_for_address_space_limit();
+
+  /**
    * One BLAS thread per rank where several ranks of @p communicator share a
    * machine, unless the user chose a count (OPENBLAS_NUM_THREADS or
    * OMP_NUM_THREADS set). OpenBLAS starts as many threads as the machine

@@ -94,6 +94,12 @@ namespace unilateral
     double
     address_space();
 
+    /// True if an address-space limit is set and leaves the run less room
+    /// than the machine's available memory: then it is what a failed
+    /// allocation ran into, and raising it is a fix.
+    bool
+    address_space_limit_binds();
+
     /// The process's peak resident memory so far (VmHWM), in bytes; 0 if
     /// the kernel does not say.
     double
