@@ -23,6 +23,13 @@
 
 namespace
 {
+  // "yes" if @p text holds @p fragment.
+  const char *
+  holds(const std::string &text, const std::string &fragment)
+  {
+    return text.find(fragment) != std::string::npos ? "yes" : "no";
+  }
+
   // Run the application on a parameter file holding @p text; return the exit
   // code, keep the error stream (and the output stream, if asked).
   int
@@ -184,10 +191,8 @@ main()
       "'Normal displacement zero' = 'base where x > 2' acts on no node";
     mistyped_note = out;
     std::cout << "A support acting nowhere (base where x > 2): exit code "
-              << code << "; noted on stdout: "
-              << (out.find(named) != std::string::npos ? "yes" : "no")
-              << "; named in the failure line: "
-              << (err.find(named) != std::string::npos ? "yes" : "no") << "\n";
+              << code << "; noted on stdout: " << holds(out, named)
+              << "; named in the failure line: " << holds(err, named) << "\n";
   }
 
   {
@@ -205,19 +210,15 @@ main()
                          &out);
     std::cout << "The whole base Signorini: exit code " << code
               << "; the note on 'base where x > s' gives the reason: "
-              << (out.find("'Normal displacement zero' = 'base where x > s' "
-                           "acts on no node (as 'Signorini part of the "
-                           "base' = 1 puts s at the structure's right end)") !=
-                      std::string::npos ?
-                    "yes" :
-                    "no")
+              << holds(out,
+                       "'Normal displacement zero' = 'base where x > s' "
+                       "acts on no node (as 'Signorini part of the base' = 1 "
+                       "puts s at the structure's right end)")
               << "; the mistyped region's note says its region holds no "
                  "node: "
-              << (mistyped_note.find("acts on no node (its region holds no "
-                                     "node of that boundary)") !=
-                      std::string::npos ?
-                    "yes" :
-                    "no")
+              << holds(mistyped_note,
+                       "acts on no node (its region holds no node of that "
+                       "boundary)")
               << "\n";
     // A region that s at the end does not explain (x > s + 1 holds no node
     // wherever s is) keeps the plain reason.
@@ -232,11 +233,9 @@ main()
         &out);
     std::cout << "  and with 'base where x > s + 1' the note says its region "
                  "holds no node: "
-              << (out.find("'base where x > s + 1' acts on no node (its "
-                           "region holds no node of that boundary)") !=
-                      std::string::npos ?
-                    "yes" :
-                    "no")
+              << holds(out,
+                       "'base where x > s + 1' acts on no node (its region "
+                       "holds no node of that boundary)")
               << "\n";
   }
 
@@ -256,10 +255,9 @@ main()
                          &out);
     std::cout << "A traction acting nowhere (top where x > 2): exit code "
               << code << "; noted on stdout: "
-              << (out.find("'Traction boundaries' = 'top where x > 2' "
-                           "acts on no node") != std::string::npos ?
-                    "yes" :
-                    "no")
+              << holds(out,
+                       "'Traction boundaries' = 'top where x > 2' acts on "
+                       "no node")
               << "\n";
   }
 
