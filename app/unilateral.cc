@@ -52,16 +52,21 @@ namespace
    * waits for the thread. So under such a limit the program restarts itself
    * once, before any thread is started, with OPENBLAS_NUM_THREADS=1 (one
    * buffer, in the main thread, which the run maps at its start:
-   * blas::prepare_for_address_space_limit). A thread count the user set is
-   * left alone.
+   * blas::prepare_for_address_space_limit). A thread count the user set
+   * is overridden too: any other than 1 would hang alike.
    */
   void
   restart_with_one_blas_thread_under_address_space_limit(char **argv)
   {
     rlimit limit{};
-    if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY ||
-        std::getenv("OPENBLAS_NUM_THREADS") != nullptr ||
-        std::getenv("OMP_NUM_THREADS") != nullptr)
+    if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+      return;
+    // OpenBLAS's own order: OPENBLAS_NUM_THREADS, else OMP_NUM_THREADS;
+    // unset, empty or 0 mean a thread per core.
+    const char *const openblas = std::getenv("OPENBLAS_NUM_THREADS");
+    const char *const omp      = std::getenv("OMP_NUM_THREADS");
+    const char *const count    = openblas != nullptr ? openblas : omp;
+    if (count != nullptr && std::strcmp(count, "1") == 0)
       return;
     if (setenv("OPENBLAS_NUM_THREADS", "1", 1) == 0)
       execv("/proc/self/exe", argv);

@@ -462,8 +462,8 @@ namespace unilateral
           memory::format(memory::address_space_limit()) + " leaves " +
           memory::format(memory::address_space_limit() -
                          memory::address_space()) +
-          " free, too little to start the run (the BLAS library alone "
-          "takes 128 MB); raise the limit");
+          " free, too little to start the run (the BLAS library's work "
+          "buffer needs 136 MB); raise the limit");
 
       context.output_directory =
         std::filesystem::path(

@@ -71,7 +71,7 @@ namespace unilateral::memory
   address_space_limit_binds()
   {
     return std::isfinite(address_space_limit()) &&
-           address_space_limit() - address_space() < machine_available();
+           address_space_limit() - address_space() < available();
   }
 
   double

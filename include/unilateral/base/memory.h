@@ -95,8 +95,8 @@ namespace unilateral
     address_space();
 
     /// True if an address-space limit is set and leaves the run less room
-    /// than the machine's available memory: then it is what a failed
-    /// allocation ran into, and raising it is a fix.
+    /// than available() (the machine, or 'Memory limit'): then it is what a
+    /// failed allocation ran into, and raising it is a fix.
     bool
     address_space_limit_binds();
 
