@@ -1,12 +1,13 @@
 // The unilateral executable: everything lives in the core library.
 #include <unilateral/application.h>
 #include <unilateral/base/blas_threads.h>
+#include <unilateral/base/memory.h>
 
 #include <deal.II/base/mpi.h>
 
-#include <sys/resource.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -58,8 +59,7 @@ namespace
   void
   restart_with_one_blas_thread_under_address_space_limit(char **argv)
   {
-    rlimit limit{};
-    if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+    if (!std::isfinite(unilateral::memory::address_space_limit()))
       return;
     // OpenBLAS's own order: OPENBLAS_NUM_THREADS, else OMP_NUM_THREADS;
     // unset, empty or 0 mean a thread per core.

@@ -516,14 +516,11 @@ namespace unilateral
         }
       catch (const std::bad_alloc &)
         {
-          failure =
-            "out of memory (an allocation failed, " +
-            (memory::address_space_limit_binds() ?
-               "with " + memory::format(memory::address_space()) + " of the " +
-                 memory::format(memory::address_space_limit()) +
-                 " address space that 'ulimit -v' allows in use" :
-               memory::format(memory::available()) + " left") +
-            "); " + memory_fix(*scene);
+          failure = "out of memory (an allocation failed, " +
+                    (memory::address_space_limit_binds() ?
+                       memory::address_space_in_use() :
+                       memory::format(memory::available()) + " left") +
+                    "); " + memory_fix(*scene);
         }
       catch (const std::exception &error)
         {

@@ -35,16 +35,24 @@ namespace unilateral::memory
       return std::numeric_limits<double>::infinity();
     }
 
+    // Field @p field of /proc/self/statm (0: the address space, 1: the
+    // resident set) in bytes; 0 if the kernel does not say.
+    double
+    statm_bytes(const unsigned int field)
+    {
+      std::ifstream statm("/proc/self/statm");
+      double        pages = 0;
+      for (unsigned int i = 0; i <= field; ++i)
+        if (!(statm >> pages))
+          return 0;
+      return pages * static_cast<double>(sysconf(_SC_PAGESIZE));
+    }
   } // namespace
 
   double
   resident()
   {
-    std::ifstream statm("/proc/self/statm");
-    double        pages = 0, resident_pages = 0;
-    if (!(statm >> pages >> resident_pages))
-      return 0;
-    return resident_pages * static_cast<double>(sysconf(_SC_PAGESIZE));
+    return statm_bytes(1);
   }
 
   double
@@ -60,11 +68,14 @@ namespace unilateral::memory
   double
   address_space()
   {
-    std::ifstream statm("/proc/self/statm");
-    double        pages = 0;
-    if (!(statm >> pages))
-      return 0;
-    return pages * static_cast<double>(sysconf(_SC_PAGESIZE));
+    return statm_bytes(0);
+  }
+
+  std::string
+  address_space_in_use()
+  {
+    return "the address space is limited to " + format(address_space_limit()) +
+           " by 'ulimit -v', " + format(address_space()) + " of it in use";
   }
 
   bool
@@ -142,9 +153,7 @@ namespace unilateral::memory
             << (limit > 0 ? " under 'Memory limit' = " + format(limit) :
                             std::string(" on this machine"));
     if (address_space_limit_binds())
-      message << " (the address space is limited to "
-              << format(address_space_limit()) << " by 'ulimit -v', "
-              << format(address_space()) << " of it in use)";
+      message << " (" << address_space_in_use() << ")";
     throw OutOfMemory(message.str());
   }
 

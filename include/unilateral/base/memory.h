@@ -100,6 +100,11 @@ namespace unilateral
     bool
     address_space_limit_binds();
 
+    /// "the address space is limited to 2.0 GB by 'ulimit -v', 1.9 GB of it
+    /// in use", for messages where the limit binds.
+    std::string
+    address_space_in_use();
+
     /// The process's peak resident memory so far (VmHWM), in bytes; 0 if
     /// the kernel does not say.
     double
