@@ -457,13 +457,21 @@ namespace unilateral
         before_large_run();
       if (std::isfinite(memory::address_space_limit()) &&
           !blas::prepare_for_address_space_limit())
-        throw InputError(
-          "the address-space limit ('ulimit -v') of " +
-          memory::format(memory::address_space_limit()) + " leaves " +
-          memory::format(memory::address_space_limit() -
-                         memory::address_space()) +
-          " free, too little to start the run (the BLAS library's work "
-          "buffer needs 136 MB); raise the limit");
+        {
+          const std::string refusal =
+            "the address-space limit ('ulimit -v') of " +
+            memory::format(memory::address_space_limit()) + " leaves " +
+            memory::format(memory::address_space_limit() -
+                           memory::address_space()) +
+            " free, too little to start the run (the BLAS library's work "
+            "buffer needs 136 MB); raise the limit";
+          // The limit is a process's own: under mpirun it may bind on one
+          // rank alone, which then has to end the others (they would wait
+          // for it in their first collective call for ever).
+          if (after_failed_run)
+            after_failed_run("error: " + refusal, 1);
+          throw InputError(refusal);
+        }
 
       context.output_directory =
         std::filesystem::path(

@@ -96,16 +96,20 @@ CASES = []
 
 def case(scene, name, expect, text=None, args=None, files=None,
          fragments=(), codes=(0,), honest=(), check=None, setup=None,
-         address_space=None):
+         address_space=None, limited_rank=None):
     """expect: 'error' (bad input), 'valid' (exit code in codes) or
     'answer' (valid input whose answer @p check judges; a one-line refusal
     is honest too). honest: exit codes that are WEAK instead of WRONG.
-    address_space: the run's 'ulimit -v' in bytes (None: unlimited)."""
+    address_space: the run's 'ulimit -v' in bytes (None: unlimited).
+    limited_rank: run under 'mpirun -np 2' with the address-space limit on
+    this rank alone (stderr is then judged by the program's lines only:
+    mpirun adds its own report of the abort)."""
     CASES.append(dict(scene=scene, name=name, expect=expect, text=text,
                       args=args if args is not None else ["case.prm"],
                       files=files or {}, fragments=fragments, codes=codes,
                       honest=honest, check=check, setup=setup,
-                      address_space=address_space))
+                      address_space=address_space,
+                      limited_rank=limited_rank))
 
 
 # --------------------------------------------------------------------------
@@ -338,6 +342,12 @@ def define_cases():
         case("masonry", f"m = {m} under ulimit -v {limit_gb} GB", "error",
              text=masonry(m=m), fragments=["ulimit -v"],
              address_space=int(limit_gb * 1e9))
+    # A limit on one rank alone (a batch system's per-process limit, one
+    # rank placed where less is left): until 2026-11-27 the refusing rank
+    # ended quietly and the other waited for it for ever.
+    case("masonry", "mpirun -np 2, m = 4 under ulimit -v 0.55 GB on rank 1 "
+         "alone", "error", text=masonry(m=4), fragments=["ulimit -v"],
+         address_space=int(0.55e9), limited_rank=1)
     case("masonry", "m = 100 under ulimit -v 1.1 GB", "answer",
          text=masonry(m=100), check=summary_status("converged"),
          address_space=int(1.1e9))
@@ -597,14 +607,28 @@ def run_case(work, number, spec):
         spec["setup"](directory)
     try:
         limit = spec["address_space"]
-        process = subprocess.run(
-            [EXECUTABLE] + spec["args"], cwd=directory, capture_output=True,
-            timeout=TIMEOUT,
-            preexec_fn=None if limit is None else
-            lambda: resource.setrlimit(resource.RLIMIT_AS, (limit, limit)))
+        rank = spec["limited_rank"]
+        if rank is None:
+            process = subprocess.run(
+                [EXECUTABLE] + spec["args"], cwd=directory,
+                capture_output=True, timeout=TIMEOUT,
+                preexec_fn=None if limit is None else
+                lambda: resource.setrlimit(resource.RLIMIT_AS, (limit, limit)))
+        else:
+            script = (f'[ "$OMPI_COMM_WORLD_RANK" = {rank} ] && '
+                      f'ulimit -v {limit // 1024}; exec "$@"')
+            process = subprocess.run(
+                ["mpirun", "-np", "2", "bash", "-c", script, "rank"] +
+                [EXECUTABLE] + spec["args"], cwd=directory,
+                capture_output=True, timeout=TIMEOUT,
+                env=dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+                         OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1"))
         code = process.returncode
         stdout = process.stdout.decode(errors="replace")
         stderr = process.stderr.decode(errors="replace")
+        if rank is not None:
+            stderr = "\n".join(line for line in stderr.splitlines()
+                               if line.startswith("unilateral"))
     except subprocess.TimeoutExpired:
         code, stdout, stderr = None, "", f"timeout after {TIMEOUT} s"
     return {"directory": directory, "code": code, "stdout": stdout,
@@ -615,7 +639,11 @@ def judge(spec, run):
     """Returns (verdict, note)."""
     code = run["code"]
     lines = run["stderr"].strip().splitlines()
-    one_line = len(lines) == 1 and lines[0].startswith("unilateral: error:")
+    one_line = len(lines) == 1 and (
+        lines[0].startswith("unilateral: error:") or
+        (spec["limited_rank"] is not None and
+         lines[0].startswith(f"unilateral (rank {spec['limited_rank']} of 2)"
+                             ": error:")))
     check = spec["check"]
     if code is None:
         return "WRONG", run["stderr"]
