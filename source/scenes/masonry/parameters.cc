@@ -220,10 +220,12 @@ namespace unilateral::masonry
     // A 3D built-in wall's boundaries are told apart by the faces' position
     // to 1e-8 h: leaves far thinner than their cells are wide would have
     // their front and back taken for one boundary, and such cells leave
-    // nothing double precision can solve (refused here, by name).
+    // nothing double precision can solve (refused here, by name). A mesh
+    // file's cells are its own and do not read these two parameters.
     const double leaf_depth_over_h =
       thickness / blocks_through_thickness * std::pow(2.0, refinement);
-    check_parameter(dimension != 3 || leaf_depth_over_h >= 1e-6,
+    check_parameter(dimension != 3 || from_mesh_file ||
+                      leaf_depth_over_h >= 1e-6,
                     geometry_section,
                     "Thickness",
                     thickness,
