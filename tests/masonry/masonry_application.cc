@@ -237,6 +237,23 @@ main()
                        "'base where x > s + 1' acts on no node (its region "
                        "holds no node of that boundary)")
               << "\n";
+    // The same region written the other way round has the same reason.
+    run("nowhere_by_choice_reversed",
+        masonry_prm("  set Blocks per side = 4\n"
+                    "  subsection Boundary conditions\n"
+                    "    set Signorini part of the base = 1\n"
+                    "    set Normal displacement zero = left, right, base "
+                    "where s < x\n"
+                    "  end\n"),
+        err,
+        &out);
+    std::cout << "  and with 'base where s < x' the note gives the same "
+                 "reason: "
+              << holds(out,
+                       "'base where s < x' acts on no node (as 'Signorini "
+                       "part of the base' = 1 puts s at the structure's "
+                       "right end)")
+              << "\n";
   }
 
   {

@@ -28,15 +28,17 @@ namespace unilateral::masonry
     // Why the support @p description ("'Signorini' = 'base where x < s'")
     // acts on no node. 'Signorini part of the base' = 0 or 1 puts s at the
     // left or right end of the structure, and the built-in supports' region
-    // 'x < s' or 'x > s' is then empty by the user's own choice, not
-    // mistyped. Any other region (x > s + 1, x < s && y > 1) is judged as
-    // written.
+    // 'x < s' or 'x > s' (or 's > x', 's < x') is then empty by the user's
+    // own choice, not mistyped. Any other region (x > s + 1, x < s && y > 1)
+    // is judged as written.
     std::string
     why_acting_nowhere(const std::string &description,
                        const double       signorini_fraction)
     {
-      static const std::regex left_of_s(R"(where\s*x\s*<\s*s\s*'$)");
-      static const std::regex right_of_s(R"(where\s*x\s*>\s*s\s*'$)");
+      static const std::regex left_of_s(
+        R"(where\s*(x\s*<\s*s|s\s*>\s*x)\s*'$)");
+      static const std::regex right_of_s(
+        R"(where\s*(x\s*>\s*s|s\s*<\s*x)\s*'$)");
       if (signorini_fraction == 0 && std::regex_search(description, left_of_s))
         return " (as 'Signorini part of the base' = 0 puts s at the "
                "structure's left end)";
