@@ -17,6 +17,7 @@
 #include <fstream>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -398,6 +399,35 @@ namespace unilateral
       reading.pop_back();
     }
 
+    /**
+     * ParameterHandler::parse_input, except that a UTF-8 byte-order mark at
+     * the start of a .prm file (as some Windows editors save one) is skipped:
+     * deal.II's parser would take it for part of the first line and refuse
+     * that line, which looks well-formed in every editor.
+     */
+    void
+    parse_parameter_file(dealii::ParameterHandler &prm,
+                         const std::string        &parameter_file)
+    {
+      const std::string byte_order_mark = "\xEF\xBB\xBF";
+      std::ifstream     in(parameter_file, std::ios::binary);
+      std::string       start(byte_order_mark.size(), '\0');
+      const bool        marked =
+        in.read(start.data(), static_cast<std::streamsize>(start.size())) &&
+        start == byte_order_mark;
+      const std::string extension =
+        std::filesystem::path(parameter_file).extension().string();
+      if (!marked || extension == ".json" || extension == ".xml")
+        {
+          prm.parse_input(parameter_file);
+          return;
+        }
+      std::ostringstream rest;
+      rest << in.rdbuf();
+      std::istringstream text(rest.str());
+      prm.parse_input(text, parameter_file);
+    }
+
     int
     run(const std::string                                   &parameter_file,
         std::ostream                                        &out,
@@ -421,7 +451,7 @@ namespace unilateral
       RunContext               context;
       dealii::ParameterHandler prm;
       declare_parameters(prm, context.solver);
-      prm.parse_input(parameter_file);
+      parse_parameter_file(prm, parameter_file);
 
       const SceneInfo &scene_info = SceneRegistry::get(prm.get("Scene"));
       memory::set_limit(1e9 * prm.get_double("Memory limit"));

@@ -453,6 +453,15 @@ def define_cases():
              "    set Signorini = base where x > 0, intrados\n"
              "    set Signorini gap = 0.005\n    set Traction boundaries =\n"
              "    set Gravity direction = 0, -1, 0\n  end\n"))
+    # Files as editors on other systems save them: Windows line ends, and a
+    # UTF-8 byte-order mark (until 2026-11-27 refused by deal.II's parser
+    # as an unparsable first line that looks well-formed).
+    case("masonry", "parameter file with CRLF line ends", "answer",
+         text=masonry(m=4).replace("\n", "\r\n"),
+         check=summary_status("converged"))
+    case("masonry", "parameter file with a UTF-8 byte-order mark", "answer",
+         text="\xef\xbb\xbf# a comment\n" + masonry(m=4),
+         check=summary_status("converged"))
     case("masonry", "Maximum iterations = 1", "valid", codes=(0, 2),
          text=masonry("", top="subsection Solver\n"
                       "  set Maximum iterations = 1\nend\n"))
