@@ -170,4 +170,37 @@ main()
         "7 1 1 1\n8 0 1 1\n$EndNodes\n"
         "$Elements\n2\n1 5 2 1 1 1 2 3 4 5 6 7 8\n2 3 2 7 11 1 2 6 5\n"
         "$EndElements\n");
+  // Found by a review (2026-11-27): the first cell of two squares listed
+  // a second time counted its weight and stiffness twice (exit 0, energy
+  // 25 % off on a 3 x 3 wall); listed with its vertices reversed, GridIn
+  // never returned. gmsh's format 2.2 writes a surface's cells once for
+  // each physical group it belongs to.
+  {
+    const std::string mesh  = two_squares(1);
+    std::string       twice = mesh;
+    twice.replace(twice.find("$Elements\n4\n"), 12, "$Elements\n5\n");
+    twice.replace(twice.find("$EndElements"),
+                  12,
+                  "5 3 2 3 1 1 2 3 4\n$EndElements");
+    bad("a cell listed twice", twice);
+    twice.replace(twice.find("5 3 2 3 1 1 2 3 4"), 17, "5 3 2 3 1 4 3 2 1");
+    bad("a cell listed twice, its vertices reversed", twice);
+  }
+  // Two unit squares of one cell each, the second pushed 0.1 into the
+  // first along their course: every point the check above tries lies on
+  // the first square's edges, and before the review the pair was solved
+  // as two blocks without a joint.
+  bad("blocks pushed into each other along a course", two_squares(0.9));
+  // A physical line on the joint of two squares that share their nodes
+  // (or a file without physical groups, where gmsh saves every curve):
+  // deal.II's message named its own vertex indices, with a stack trace.
+  bad("a boundary line between two cells that share its nodes",
+      header +
+        "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
+        "$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 2 1 0\n5 1 1 0\n6 0 1 0\n"
+        "$EndNodes\n$Elements\n5\n1 3 2 1 1 1 2 5 6\n2 3 2 2 2 2 3 4 5\n"
+        "3 1 2 7 11 1 2\n4 1 2 7 12 2 3\n5 1 2 8 13 2 5\n$EndElements\n");
+  bad("a cell with no area",
+      header + "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 3 0 0\n$EndNodes\n"
+               "$Elements\n1\n1 3 2 1 1 1 2 3 4\n$EndElements\n");
 }

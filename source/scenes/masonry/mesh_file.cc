@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <regex>
 #include <sstream>
 
 namespace unilateral::masonry
@@ -51,6 +52,16 @@ namespace unilateral::masonry
       throw InputError("mesh file '" + file + "': " + what);
     }
 
+    /// gmsh's linear element types: (dimension, number of nodes).
+    const std::map<int, std::pair<int, int>> linear_elements = {{1, {1, 2}},
+                                                                {15, {0, 1}},
+                                                                {2, {2, 3}},
+                                                                {3, {2, 4}},
+                                                                {4, {3, 4}},
+                                                                {5, {3, 8}},
+                                                                {6, {3, 6}},
+                                                                {7, {3, 5}}};
+
     /// The number of vertices of a linear cell of gmsh type @p type in
     /// dimension @p dim (2: triangle, 3: quadrilateral, 4: tetrahedron,
     /// 5: hexahedron), 0 for lower-dimensional elements; InputError for
@@ -58,15 +69,8 @@ namespace unilateral::masonry
     int
     cell_vertices(const int type, const int dim, const std::string &file)
     {
-      const std::map<int, std::pair<int, int>> linear = {{1, {1, 2}},
-                                                         {15, {0, 1}},
-                                                         {2, {2, 3}},
-                                                         {3, {2, 4}},
-                                                         {4, {3, 4}},
-                                                         {5, {3, 8}},
-                                                         {6, {3, 6}},
-                                                         {7, {3, 5}}};
-      const auto                               found  = linear.find(type);
+      const auto &linear = linear_elements;
+      const auto  found  = linear.find(type);
       if (found == linear.end())
         fail(file,
              "element type " + std::to_string(type) +
@@ -82,6 +86,48 @@ namespace unilateral::masonry
       return found->second.second;
     }
 
+    /// A measure of the area (volume) of a linear gmsh cell of type @p type
+    /// with nodes @p p, in gmsh's node order: zero for a collapsed cell
+    /// alone (GridIn reorients clockwise cells; tangled ones are refused
+    /// later, by their corners' Jacobians).
+    double
+    element_measure(const int type, const std::vector<dealii::Point<3>> &p)
+    {
+      using dealii::cross_product_3d;
+      if (type == 2)
+        return 0.5 * cross_product_3d(p[1] - p[0], p[2] - p[0]).norm();
+      // A quadrilateral: its four corner triangles, so that only four
+      // nodes on a line give zero (not a tangled, bow-tie cell).
+      if (type == 3)
+        return 0.25 * (cross_product_3d(p[1] - p[0], p[3] - p[0]).norm() +
+                       cross_product_3d(p[2] - p[1], p[0] - p[1]).norm() +
+                       cross_product_3d(p[3] - p[2], p[1] - p[2]).norm() +
+                       cross_product_3d(p[0] - p[3], p[2] - p[3]).norm());
+      if (type == 4)
+        return std::abs(cross_product_3d(p[1] - p[0], p[2] - p[0]) *
+                        (p[3] - p[0])) /
+               6;
+      // A hexahedron: the tetrahedra from its centre to its faces' halves,
+      // each counted positive (zero only for eight nodes in a plane).
+      dealii::Point<3> centre;
+      for (const auto &point : p)
+        centre += point / 8.0;
+      const unsigned int faces[6][4] = {{0, 3, 2, 1},
+                                        {0, 1, 5, 4},
+                                        {0, 4, 7, 3},
+                                        {1, 2, 6, 5},
+                                        {2, 3, 7, 6},
+                                        {4, 5, 6, 7}};
+      double             volume      = 0;
+      for (const auto &f : faces)
+        for (const unsigned int k : {1u, 2u})
+          volume +=
+            std::abs(cross_product_3d(p[f[0]] - centre, p[f[k]] - centre) *
+                     (p[f[k + 1]] - centre)) /
+            6;
+      return volume;
+    }
+
     template <int dim>
     GmshScan<dim>
     scan_gmsh(const std::string &file)
@@ -94,11 +140,15 @@ namespace unilateral::masonry
       std::map<std::pair<int, int>, int> entity_physical; // (dim, tag)
       struct Element
       {
+        long              tag;
         int               entity, physical, type;
         std::vector<long> nodes;
       };
       std::vector<Element> elements;
-      auto                 read_or_fail = [&](auto &value) {
+      // The boundary elements (curves in 2D, surfaces in 3D) by their
+      // sorted nodes: one listed twice is refused.
+      std::map<std::vector<long>, long> boundary_elements;
+      auto                              read_or_fail = [&](auto &value) {
         if (!(in >> value))
           fail(file, "unexpected end or bad number in section " + section);
       };
@@ -168,6 +218,17 @@ namespace unilateral::masonry
                     for (int k = 0; k < (d == 0 ? 3 : 6); ++k)
                       read_or_fail(box);
                     read_or_fail(n);
+                    // GridIn reads one physical tag per entity; a block
+                    // or a support boundary in two groups is ambiguous.
+                    if (n > 1 && (d == dim || d == dim - 1))
+                      fail(file,
+                           std::string(d == 3 ? "volume " :
+                                       d == 2 ? "surface " :
+                                                "curve ") +
+                             std::to_string(tag) + " belongs to " +
+                             std::to_string(n) +
+                             " physical groups: put each into one physical "
+                             "group (a block's, or a boundary's)");
                     for (long k = 0; k < n; ++k)
                       {
                         int physical = 0;
@@ -233,26 +294,36 @@ namespace unilateral::masonry
             }
           else if (section == "$Elements")
             {
-              auto read_element =
-                [&](const int entity, const int physical, const int type) {
-                  Element    element{entity, physical, type, {}};
-                  const int  n = cell_vertices(type, dim, file);
-                  const long k = n > 0 ? n :
-                                         std::map<int, int>{{1, 2},
-                                                            {15, 1},
-                                                            {2, 3},
-                                                            {3, 4},
-                                                            {4, 4},
-                                                            {5, 8},
-                                                            {6, 6},
-                                                            {7, 5}}
-                                           .at(type);
-                  element.nodes.resize(k);
-                  for (long &node : element.nodes)
-                    read_or_fail(node);
-                  if (n > 0)
-                    elements.push_back(std::move(element));
-                };
+              auto read_element = [&](const long tag,
+                                      const int  entity,
+                                      const int  physical,
+                                      const int  type) {
+                Element   element{tag, entity, physical, type, {}};
+                const int n = cell_vertices(type, dim, file);
+                element.nodes.resize(linear_elements.at(type).second);
+                for (long &node : element.nodes)
+                  read_or_fail(node);
+                if (n > 0)
+                  elements.push_back(std::move(element));
+                else if (linear_elements.at(type).first == dim - 1)
+                  {
+                    std::vector<long> key = element.nodes;
+                    std::sort(key.begin(), key.end());
+                    const auto [first, added] =
+                      boundary_elements.emplace(key, tag);
+                    if (!added)
+                      fail(file,
+                           "elements " + std::to_string(first->second) +
+                             " and " + std::to_string(tag) +
+                             " are one boundary " +
+                             (dim == 2 ? "segment" : "face") +
+                             " (the same nodes), listed twice; gmsh's format "
+                             "2.2 lists a " +
+                             (dim == 2 ? "curve" : "surface") +
+                             "'s elements once for each physical group it "
+                             "belongs to: put each into one physical group");
+                  }
+              };
               if (version == 2.2)
                 {
                   long n = 0;
@@ -273,7 +344,7 @@ namespace unilateral::masonry
                           else if (t == 1)
                             entity = value;
                         }
-                      read_element(entity, physical, type);
+                      read_element(tag, entity, physical, type);
                     }
                 }
               else
@@ -297,7 +368,8 @@ namespace unilateral::masonry
                         {
                           long tag = 0;
                           read_or_fail(tag);
-                          read_element(entity,
+                          read_element(tag,
+                                       entity,
                                        physical == entity_physical.end() ?
                                          0 :
                                          physical->second,
@@ -316,8 +388,28 @@ namespace unilateral::masonry
                "in 3D): check 'Masonry/Dimension' and the file");
       scan.simplex = elements.front().type == 2 || elements.front().type == 4;
       scan.smallest_edge = std::numeric_limits<double>::max();
+      std::map<std::vector<long>, long> cell_of_nodes;
       for (const Element &element : elements)
         {
+          // A cell listed twice would count its weight and stiffness twice
+          // (and GridIn, given it with another vertex order, never returns).
+          std::vector<long> key = element.nodes;
+          std::sort(key.begin(), key.end());
+          if (std::adjacent_find(key.begin(), key.end()) != key.end())
+            fail(file,
+                 "element " + std::to_string(element.tag) +
+                   " names one node twice (a collapsed cell): remesh it");
+          const auto [first, added] = cell_of_nodes.emplace(key, element.tag);
+          if (!added)
+            fail(file,
+                 "elements " + std::to_string(first->second) + " and " +
+                   std::to_string(element.tag) +
+                   " are one cell (the same nodes), listed twice: its weight "
+                   "and stiffness would count twice; gmsh's format 2.2 lists "
+                   "a " +
+                   (dim == 2 ? "surface" : "volume") +
+                   "'s cells once for each physical group it belongs to: put "
+                   "each into one physical group");
           if ((element.type == 2 || element.type == 4) != scan.simplex)
             fail(file,
                  "mixes simplices and hypercubes: mesh every block with "
@@ -345,6 +437,26 @@ namespace unilateral::masonry
             scan.smallest_edge = std::min(scan.smallest_edge,
                                           nodes[element.nodes[a]].distance(
                                             nodes[element.nodes[0]]));
+          std::vector<dealii::Point<3>> corners;
+          double                        diameter = 0;
+          for (const long node : element.nodes)
+            {
+              corners.push_back(nodes[node]);
+              for (const auto &corner : corners)
+                diameter = std::max(diameter, corner.distance(nodes[node]));
+            }
+          if (element_measure(element.type, corners) <=
+              1e-10 * std::pow(diameter, dim))
+            {
+              std::ostringstream where;
+              where << cell.centroid;
+              fail(file,
+                   "element " + std::to_string(element.tag) + " (at (" +
+                     where.str() + ")) has no " +
+                     (dim == 2 ? "area: its nodes lie on a line" :
+                                 "volume: its nodes lie in a plane") +
+                     "; remesh it");
+            }
           scan.cells.push_back(cell);
         }
       return scan;
@@ -526,6 +638,223 @@ namespace unilateral::masonry
             }
         }
     }
+
+    /// The axes along which two convex cells may be told apart: the normals
+    /// of their faces (of both triangles of each diagonal of a quadrilateral
+    /// face in 3D, so that a face that is not plane is covered by the convex
+    /// hull of its vertices) and, with @p edges in 3D, the cross products
+    /// of their edges and face diagonals.
+    template <int dim>
+    std::vector<dealii::Tensor<1, dim>>
+    separating_axes(
+      const typename dealii::Triangulation<dim>::active_cell_iterator &a,
+      const typename dealii::Triangulation<dim>::active_cell_iterator &b,
+      const bool                                                       edges)
+    {
+      std::vector<dealii::Tensor<1, dim>> axes;
+      if constexpr (dim == 2)
+        {
+          (void)edges;
+          for (const auto &cell : {a, b})
+            for (const unsigned int l : cell->line_indices())
+              {
+                const auto t =
+                  cell->line(l)->vertex(1) - cell->line(l)->vertex(0);
+                axes.push_back(dealii::Tensor<1, 2>({-t[1], t[0]}));
+              }
+        }
+      else
+        {
+          std::array<std::vector<dealii::Tensor<1, 3>>, 2> directions;
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              const auto &cell = k == 0 ? a : b;
+              for (const unsigned int f : cell->face_indices())
+                {
+                  const auto face = cell->face(f);
+                  auto v = [&](unsigned int i) { return face->vertex(i); };
+                  if (face->n_vertices() == 3)
+                    axes.push_back(
+                      dealii::cross_product_3d(v(1) - v(0), v(2) - v(0)));
+                  else
+                    {
+                      // deal.II's lexicographic order: diagonals 0-3, 1-2.
+                      for (const auto &t : {std::array<unsigned, 3>{0, 1, 3},
+                                            std::array<unsigned, 3>{0, 3, 2},
+                                            std::array<unsigned, 3>{0, 1, 2},
+                                            std::array<unsigned, 3>{1, 3, 2}})
+                        axes.push_back(
+                          dealii::cross_product_3d(v(t[1]) - v(t[0]),
+                                                   v(t[2]) - v(t[0])));
+                      directions[k].push_back(v(3) - v(0));
+                      directions[k].push_back(v(2) - v(1));
+                    }
+                }
+              for (const unsigned int l : cell->line_indices())
+                directions[k].push_back(cell->line(l)->vertex(1) -
+                                        cell->line(l)->vertex(0));
+            }
+          if (edges)
+            for (const auto &s : directions[0])
+              for (const auto &t : directions[1])
+                axes.push_back(dealii::cross_product_3d(s, t));
+        }
+      return axes;
+    }
+
+    /// How far the convex hulls of @p a and @p b overlap along every one
+    /// of @p axes at least: at or below zero, an axis separates them.
+    template <int dim>
+    double
+    overlap_depth(const std::vector<dealii::Point<dim>>     &a,
+                  const std::vector<dealii::Point<dim>>     &b,
+                  const std::vector<dealii::Tensor<1, dim>> &axes)
+    {
+      double depth = std::numeric_limits<double>::infinity();
+      for (const auto &axis : axes)
+        {
+          const double length = axis.norm();
+          if (!(length > 0))
+            continue;
+          auto range = [&](const std::vector<dealii::Point<dim>> &points) {
+            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+            for (const auto &p : points)
+              {
+                lo = std::min(lo, p * axis / length);
+                hi = std::max(hi, p * axis / length);
+              }
+            return std::make_pair(lo, hi);
+          };
+          const auto [a_lo, a_hi] = range(a);
+          const auto [b_lo, b_hi] = range(b);
+          depth = std::min(depth, std::min(a_hi, b_hi) - std::max(a_lo, b_lo));
+          if (depth <= 0)
+            break;
+        }
+      return depth;
+    }
+
+    /**
+     * Blocks that overlap by a region: two cells of different blocks whose
+     * convex hulls no axis separates, by more than 5e-3 of the smaller
+     * cell (the check of points above misses an overlap whose
+     * points all lie on the other block's cell edges, as two stacked blocks
+     * pushed into each other along a course). Cells that share a face
+     * (a joint) are not compared: a face that is not plane makes their
+     * hulls overlap by its warp. Smaller overlaps are left to the contact
+     * detection, which refuses faces that nearly coincide (to 1e-2 of a
+     * cell) with their distance.
+     */
+    template <int dim>
+    void
+    check_cells_separated(const dealii::Triangulation<dim> &triangulation,
+                          const std::string                &file)
+    {
+      using Cell = typename dealii::Triangulation<dim>::active_cell_iterator;
+      std::vector<Cell> cells;
+      double            spacing = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          cells.push_back(cell);
+          spacing = std::max(spacing, cell->diameter());
+        }
+      using Key = std::array<long long, dim>;
+      std::map<Key, std::vector<unsigned int>> grid;
+      auto corner_keys = [&](const Cell &cell) {
+        const auto       box = cell->bounding_box().get_boundary_points();
+        const Key        lo  = grid_key<dim>(box.first, spacing);
+        const Key        hi  = grid_key<dim>(box.second, spacing);
+        std::vector<Key> keys;
+        for (unsigned int probe = 0; probe < (1u << dim); ++probe)
+          {
+            Key k;
+            for (unsigned int d = 0; d < dim; ++d)
+              k[d] = (probe >> d) & 1 ? hi[d] : lo[d];
+            keys.push_back(k);
+          }
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        return keys;
+      };
+      for (unsigned int i = 0; i < cells.size(); ++i)
+        for (const Key &k : corner_keys(cells[i]))
+          grid[k].push_back(i);
+
+      auto vertices = [](const Cell &cell) {
+        std::vector<dealii::Point<dim>> v;
+        for (const unsigned int i : cell->vertex_indices())
+          v.push_back(cell->vertex(i));
+        return v;
+      };
+      for (unsigned int i = 0; i < cells.size(); ++i)
+        {
+          const Cell               &a = cells[i];
+          std::vector<unsigned int> near;
+          for (const Key &k : corner_keys(a))
+            for (const unsigned int j : grid[k])
+              if (j > i && cells[j]->material_id() != a->material_id())
+                near.push_back(j);
+          std::sort(near.begin(), near.end());
+          near.erase(std::unique(near.begin(), near.end()), near.end());
+          const auto   a_vertices = vertices(a);
+          const auto   a_box      = a->bounding_box().get_boundary_points();
+          const double a_size     = a->minimum_vertex_distance();
+          for (const unsigned int j : near)
+            {
+              const Cell  &b = cells[j];
+              const double size =
+                std::min(a_size, b->minimum_vertex_distance());
+              const double allowed = 5e-3 * size;
+              // Most neighbours are told apart by their bounding boxes.
+              const auto b_box     = b->bounding_box().get_boundary_points();
+              bool       separated = false;
+              for (unsigned int d = 0; d < dim; ++d)
+                separated =
+                  separated || std::min(a_box.second[d], b_box.second[d]) -
+                                   std::max(a_box.first[d], b_box.first[d]) <=
+                                 allowed;
+              if (separated)
+                continue;
+              const auto b_vertices = vertices(b);
+              // A face of a whose every vertex is one of b's: a joint.
+              bool joint = false;
+              for (const unsigned int f : a->face_indices())
+                {
+                  bool all = true;
+                  for (const unsigned int v : a->face(f)->vertex_indices())
+                    all =
+                      all &&
+                      std::any_of(b_vertices.begin(),
+                                  b_vertices.end(),
+                                  [&](const auto &p) {
+                                    return p.distance(a->face(f)->vertex(v)) <=
+                                           1e-6 * size;
+                                  });
+                  joint = joint || all;
+                }
+              if (joint ||
+                  overlap_depth<dim>(a_vertices,
+                                     b_vertices,
+                                     separating_axes<dim>(a, b, false)) <=
+                    allowed)
+                continue;
+              const double depth =
+                overlap_depth<dim>(a_vertices,
+                                   b_vertices,
+                                   separating_axes<dim>(a, b, true));
+              if (depth <= allowed)
+                continue;
+              std::ostringstream message;
+              message << "blocks " << a->material_id() << " and "
+                      << b->material_id() << " overlap by " << depth
+                      << " (their cells at (" << a->center() << ") and ("
+                      << b->center()
+                      << ")): blocks may touch, not overlap; move them "
+                         "apart";
+              fail(file, message.str());
+            }
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -561,7 +890,26 @@ namespace unilateral::masonry
         const auto  at     = reason.find("Additional information:");
         if (at != std::string::npos)
           reason = reason.substr(at + 23);
-        std::replace(reason.begin(), reason.end(), '\n', ' ');
+        reason = std::regex_replace(reason, std::regex(R"(\s+)"), " ");
+        // Its message names vertex indices of its own and is followed by a
+        // stack trace: the cases a user meets are said in their terms.
+        if (reason.find("boundary id for an internal face") !=
+            std::string::npos)
+          fail(file_name,
+               std::string("an element of a ") +
+                 (dim == 2 ? "curve" : "surface") +
+                 " lies between two cells that share its nodes (a joint "
+                 "between blocks that share nodes is in a physical group, or "
+                 "the file has none, and gmsh saved every " +
+                 (dim == 2 ? "curve" : "surface") +
+                 ", the joints' too); put the blocks into physical " +
+                 (dim == 2 ? "surfaces" : "volumes") +
+                 " and only the outer boundaries the supports name into "
+                 "physical " +
+                 (dim == 2 ? "curves" : "surfaces"));
+        const auto trace = reason.find("Stacktrace:");
+        if (trace != std::string::npos)
+          reason.erase(trace);
         fail(file_name,
              "deal.II's GridIn cannot read it: " +
                dealii::Utilities::trim(reason));
@@ -767,6 +1115,7 @@ namespace unilateral::masonry
           }
 
     check_no_overlap<dim>(triangulation, scan.simplex, file_name);
+    check_cells_separated<dim>(triangulation, file_name);
 
     BoundaryNames &names = result.boundaries;
     names.source         = std::filesystem::path(file_name).filename().string();
