@@ -320,20 +320,38 @@ namespace unilateral::lcp
         return {infinite, infinite, infinite, infinite};
       }
 
+    // Measured in the unknowns scaled to A's unit diagonal (u_i sqrt(A_ii),
+    // forces / sqrt(A_ii)), so that no choice of units hides an error: where
+    // unknowns of different kinds differ in stiffness by many orders (the
+    // plate's deflections and slopes on elements of 1e-4 mm), a residual
+    // relative to the largest force let the others be wrong.
+    const double mean_diagonal = diagonal_scale(problem.A);
+    Vector       root_stiffness(n);
+    for (Index i = 0; i < n; ++i)
+      root_stiffness[i] = std::sqrt(
+        problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : mean_diagonal);
+
     // |A| |u|: the size of the terms that cancel in A u.
     Vector abs_product = Vector::Zero(n);
     for (Index j = 0; j < n; ++j)
       for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
         abs_product[it.row()] += std::abs(it.value() * u[j]);
 
-    double force_scale = problem.b.lpNorm<Eigen::Infinity>() +
-                         (n > 0 ? abs_product.lpNorm<Eigen::Infinity>() : 0.0);
+    double force_scale =
+      n > 0 ?
+        problem.b.cwiseQuotient(root_stiffness).lpNorm<Eigen::Infinity>() +
+          abs_product.cwiseQuotient(root_stiffness).lpNorm<Eigen::Infinity>() :
+        0.0;
     // A bound's penetration relative to |u|, not to |u| + |l|: one far
     // bound (an obstacle that nothing reaches) would hide any penetration
     // of the others. |l| only where u = 0.
-    double displacement_scale = n > 0 ? u.lpNorm<Eigen::Infinity>() : 0.0;
-    if (displacement_scale == 0 && problem.n_constrained() > 0)
-      displacement_scale = problem.lower_bound.lpNorm<Eigen::Infinity>();
+    double displacement_scale =
+      n > 0 ? u.cwiseProduct(root_stiffness).lpNorm<Eigen::Infinity>() : 0.0;
+    if (displacement_scale == 0)
+      for (Index k = 0; k < problem.n_constrained(); ++k)
+        displacement_scale = std::max(displacement_scale,
+                                      std::abs(problem.lower_bound[k]) *
+                                        root_stiffness[problem.constrained[k]]);
     if (force_scale == 0)
       force_scale = 1;
     if (displacement_scale == 0)
@@ -343,20 +361,19 @@ namespace unilateral::lcp
     const std::vector<char> mask = problem.constrained_mask();
     for (Index i = 0; i < n; ++i)
       if (!mask[i])
-        result.stationarity =
-          std::max(result.stationarity, std::abs(lambda[i]));
-    const double mean_diagonal = diagonal_scale(problem.A);
+        result.stationarity = std::max(result.stationarity,
+                                       std::abs(lambda[i]) / root_stiffness[i]);
     for (Index k = 0; k < problem.n_constrained(); ++k)
       {
-        const Index  i     = problem.constrained[k];
-        const double slack = u[i] - problem.lower_bound[k];
-        const double stiffness =
-          problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : mean_diagonal;
+        const Index  i = problem.constrained[k];
+        const double slack =
+          (u[i] - problem.lower_bound[k]) * root_stiffness[i];
+        const double force        = lambda[i] / root_stiffness[i];
         result.primal_feasibility = std::max(result.primal_feasibility, -slack);
-        result.dual_feasibility = std::max(result.dual_feasibility, -lambda[i]);
+        result.dual_feasibility   = std::max(result.dual_feasibility, -force);
         result.complementarity =
           std::max(result.complementarity,
-                   std::min(std::abs(slack) * stiffness, std::abs(lambda[i])));
+                   std::min(std::abs(slack), std::abs(force)));
       }
     result.stationarity /= force_scale;
     result.primal_feasibility /= displacement_scale;

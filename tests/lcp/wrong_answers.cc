@@ -9,11 +9,14 @@
 //  3. data beyond double precision: never converged (no double holds the
 //     answer, so a converged one, finite or not, is wrong);
 //  4. an indefinite A is refused before any answer (it was solved: pdas gave
-//     u = (1/3, 1/3), graves (0, 1)).
+//     u = (1/3, 1/3), graves (0, 1));
+//  5. unknowns whose stiffness differs by 1e24: right in each unknown's own
+//     units, or not converged.
 #include <unilateral/base/input_error.h>
 
 #include "../lcp_test_tools.h"
 
+#include <cmath>
 #include <limits>
 #include <map>
 
@@ -115,6 +118,45 @@ main()
                  [](const Report &report, const Vector &) {
                    return !report.converged();
                  });
+  }
+
+  // 5. Unknowns of very different units: A = S A0 S with A0 = tridiag(-1,
+  // 3, -1) and S = diag(1e-6, 1, 1e6, ...), b = S b0, the second unknown
+  // bounded by 0; u = S^-1 u0 for the answer u0 of (A0, b0). Every method
+  // here is right or says it failed; the plate on elements of 1e-4 mm,
+  // where the KKT residuals relative to the largest force once let tnnmg's
+  // answer pass 3.7e-4 off, is tests/plate/extreme_scales.
+  {
+    const int   n  = 6;
+    DenseMatrix A0 = DenseMatrix::Zero(n, n);
+    Vector      b0(n), scale(n);
+    for (int i = 0; i < n; ++i)
+      {
+        A0(i, i) = 3;
+        if (i > 0)
+          A0(i, i - 1) = A0(i - 1, i) = -1;
+        b0[i]    = i % 2 == 0 ? 1.0 : -2.0;
+        scale[i] = std::pow(10.0, 6 * (i % 3) - 6);
+      }
+    const DenseMatrix A        = scale.asDiagonal() * A0 * scale.asDiagonal();
+    const Problem     unscaled = make_problem(A0, b0, {1}, {0.0});
+    const Problem problem = make_problem(A, scale.cwiseProduct(b0), {1}, {0.0});
+    Vector        u0;
+    solve_with(unscaled, all_methods(true).front(), u0);
+    const Vector expected = u0.cwiseQuotient(scale);
+    every_method(
+      "unknowns whose stiffness differs by 1e24: converged only with every "
+      "unknown right to 1e-7 in its own units",
+      problem,
+      [&](const Report &report, const Vector &u) {
+        // The error of each unknown in units of A's unit diagonal (u_i
+        // sqrt(A_ii)), against the largest such unknown: at most the KKT
+        // tolerance (1e-8) times the condition of the scaled A (5).
+        const Vector root = A.diagonal().cwiseSqrt();
+        return !report.converged() ||
+               (u - expected).cwiseProduct(root).lpNorm<Eigen::Infinity>() <=
+                 1e-7 * expected.cwiseProduct(root).lpNorm<Eigen::Infinity>();
+      });
   }
 
   // 4. An indefinite A (eigenvalues 3 and -1).

@@ -191,7 +191,8 @@ namespace unilateral::lcp
                     const Hierarchy          &hierarchy,
                     const Problem            &problem,
                     unsigned int              level,
-                    const LevelVector        &b) const;
+                    const LevelVector        &b,
+                    double                    load_scale) const;
 
       LevelOutcome
       iterate(TruncatedMultigrid &mg,
@@ -250,7 +251,8 @@ namespace unilateral::lcp
                          const Hierarchy          &hierarchy,
                          const Problem            &problem,
                          const unsigned int        level,
-                         const LevelVector        &b) const
+                         const LevelVector        &b,
+                         const double              load_scale) const
     {
       const bool                finest = level + 1 == mg.n_levels();
       const Hierarchy::Level   &data   = hierarchy.levels[level];
@@ -263,7 +265,7 @@ namespace unilateral::lcp
       Vector lower = Vector::Constant(data.n_unknowns,
                                       -std::numeric_limits<double>::infinity());
       for (std::size_t k = 0; k < constrained.size(); ++k)
-        lower[constrained[k]] = bounds[k];
+        lower[constrained[k]] = bounds[k] / load_scale;
       Vector marks = Vector::Zero(data.n_unknowns);
       for (const Index i : constrained)
         marks[i] = 1;
@@ -485,9 +487,16 @@ namespace unilateral::lcp
                               TruncatedMultigrid::Cycle::v);
       const unsigned int finest = mg.n_levels() - 1;
 
+      // The LCP solved for u / s, s the largest load: the products of the
+      // conjugate gradients and the line search are of the order of u^2
+      // |A|, which loads of 1e-150 take below the smallest double (and
+      // 1e200 beyond the largest), where they become NaN.
+      const double load_norm  = problem.b.lpNorm<Eigen::Infinity>();
+      const double load_scale = load_norm > 0 ? load_norm : 1.0;
+
       // The loads of every level, restricted from the finest.
       std::vector<LevelVector> b(mg.n_levels());
-      mg.to_nodes(finest, problem.b, b[finest]);
+      mg.to_nodes(finest, problem.b / load_scale, b[finest]);
       for (unsigned int level = finest; level-- > 0;)
         mg.restrict_to(level, b[level + 1], b[level]);
 
@@ -502,7 +511,7 @@ namespace unilateral::lcp
       for (unsigned int level = first; level <= finest; ++level)
         {
           LevelProblem lcp =
-            level_problem(mg, hierarchy, problem, level, b[level]);
+            level_problem(mg, hierarchy, problem, level, b[level], load_scale);
           if (level > first)
             start_from_coarser(mg, level, coarse_lcp, lcp, u);
           for (std::size_t i = 0; i < u.size(); ++i)
@@ -543,16 +552,25 @@ namespace unilateral::lcp
           *progress << "    tnnmg: one product with A on the finest level "
                     << fastest << " s" << std::endl;
         }
-      solution.u        = mg.from_nodes(finest, u);
+      solution.u        = load_scale * mg.from_nodes(finest, u);
       report.iterations = outcome.iterations;
-      if (outcome.converged)
+      if (!solution.u.allFinite())
+        {
+          report.status  = Status::singular;
+          report.message = "TNNMG broke down (non-finite iterate)";
+        }
+      else if (outcome.converged)
         report.status = Status::converged;
       else
         {
-          report.status  = Status::iteration_limit;
-          report.message = "TNNMG did not reach 'Tolerance' within " +
-                           std::to_string(iteration_limit(100)) +
-                           " iterations on the finest level";
+          report.status = Status::iteration_limit;
+          report.message =
+            "TNNMG did not reach 'Tolerance' within " +
+            std::to_string(iteration_limit(100)) +
+            " iterations on the finest level (as on "
+            "elements several times longer than wide, where "
+            "its block smoother is slow): raise 'Solver/Maximum iterations', or use "
+            "'Solver/Method = pdas'";
         }
     }
   } // namespace

@@ -303,7 +303,7 @@ namespace unilateral::plate
            "deflection, slope and twist unknowns differ in size by powers "
            "of the element size, which lengths far from 1 in the plate's "
            "units make extreme; give the lengths in units nearer the "
-           "plate's size, or use 'Solver/Method = tnnmg' (" +
+           "plate's size, with the modulus and the load converted alike (" +
            report.message + ")";
   }
 

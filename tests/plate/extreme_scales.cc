@@ -1,0 +1,74 @@
+// Plates whose numbers lie far from 1, against the same plate in ordinary
+// numbers (independent truth: the clamped plate's deflection under a
+// uniform load scales with the length to the 4th power and with the load):
+//  1. a steel plate 1e-3 mm wide (elements of 5e-5 mm, whose deflections,
+//     slopes and twists differ in stiffness by about 1e17): converged only
+//     with the deflection of the 100 mm plate times 1e-20. Found by a
+//     review (2026-11-27): tnnmg ended 'converged' 3.7e-4 off, its KKT
+//     residuals relative to the largest force hiding the others' errors.
+//  2. a load of -1e-150: the deflection of the load -1 times 1e-150 (tnnmg
+//     ended with NaN, blaming its iteration limit).
+#include "plate_runs.h"
+
+#include <cmath>
+#include <iostream>
+
+using namespace plate_runs;
+
+namespace
+{
+  std::string
+  free_plate(const std::string &length, const std::string &force)
+  {
+    return "subsection Geometry\n  set Length x = " + length +
+           "\n  set Length y = " + length +
+           "\n  set Elements x = 20\n  set Elements y = 20\nend\n"
+           "subsection Material\n  set Name = steel\nend\n"
+           "subsection Obstacle\n  set Function = none\nend\n"
+           "subsection Load\n  set Force = " +
+           force + "\nend\n";
+  }
+
+  bool
+  close(const double value, const double expected)
+  {
+    return std::abs(value - expected) <= 1e-8 * std::abs(expected);
+  }
+} // namespace
+
+int
+main()
+{
+  const double reference =
+    run_plate("reference", free_plate("100", "-1"), "pdas")
+      .results()
+      .min_deflection;
+  for (const std::string method : {"tnnmg", "pdas", "interior_point"})
+    {
+      const Run tiny =
+        run_plate("tiny_" + method, free_plate("0.001", "-1"), method);
+      std::cout << "1e-3 mm plate, " << method << ": "
+                << (tiny.report.converged() ? "converged" : "not converged")
+                << ", right if converged: "
+                << (!tiny.report.converged() ||
+                        close(tiny.results().min_deflection,
+                              1e-20 * reference) ?
+                      "yes" :
+                      "NO")
+                << "\n";
+    }
+  for (const std::string method : {"tnnmg", "pdas"})
+    {
+      const Run faint =
+        run_plate("faint_" + method, free_plate("100", "-1e-150"), method);
+      std::cout << "load -1e-150, " << method << ": "
+                << (faint.report.converged() ? "converged" : "not converged")
+                << ", deflection right: "
+                << (faint.report.converged() &&
+                        close(faint.results().min_deflection,
+                              1e-150 * reference) ?
+                      "yes" :
+                      "NO")
+                << "\n";
+    }
+}
