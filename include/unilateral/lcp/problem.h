@@ -154,13 +154,19 @@ namespace unilateral::lcp
 
   /**
    * Relative KKT residuals of u (lambda = A u - b is computed here, so no
-   * solver can report a residual it did not earn). With the force scale
-   * f = ||b||_inf + || |A| |u| ||_inf (1 if zero) and the displacement scale
-   * d = ||u||_inf + ||l_S||_inf (1 if zero):
-   *  stationarity       = ||lambda_{not S}||_inf / f
-   *  primal feasibility = ||max(l_S - u_S, 0)||_inf / d
-   *  dual feasibility   = ||max(-lambda_S, 0)||_inf / f
-   *  complementarity    = max over S of min(|u_i - l_i| A_ii, |lambda_i|) / f,
+   * solver can report a residual it did not earn), in the unknowns scaled
+   * to A's unit diagonal: with D = diag(A) (its mean where an entry is not
+   * positive), forces are measured as D^-1/2 lambda and displacements as
+   * D^1/2 u, so that unknowns of different units (a plate's deflections,
+   * slopes and twists) each count in their own. With the force scale
+   * f = ||D^-1/2 b||_inf + ||D^-1/2 |A| |u| ||_inf (1 if zero) and the
+   * displacement scale d = ||D^1/2 u||_inf (||D^1/2 l_S||_inf where u = 0;
+   * 1 if zero):
+   *  stationarity       = ||D^-1/2 lambda_{not S}||_inf / f
+   *  primal feasibility = ||D^1/2 max(l_S - u_S, 0)||_inf / d
+   *  dual feasibility   = ||D^-1/2 max(-lambda_S, 0)||_inf / f
+   *  complementarity    = max over S of
+   *                       min(|u_i - l_i| A_ii^1/2, |lambda_i| A_ii^-1/2) / f,
    * the natural (min-map) residual in force units. Unlike the product
    * (u_i - l_i) lambda_i it bounds the error of u: an interior-point iterate
    * with slack 1e-6 at a contact has a product near 1e-12 but a min-map
