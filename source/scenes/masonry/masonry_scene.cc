@@ -787,6 +787,29 @@ namespace unilateral::masonry
     if (state)
       for (const std::string &support : state->contacts.supports_acting_nowhere)
         unused += "; " + support + " acts on no node";
+    // A block with no joint and no support floats whatever the loads: the
+    // likeliest cause in a mesh file is two faces that nearly touch but do
+    // not coincide (joints are made only between coinciding faces).
+    if (state && !state->contacts.node_block.empty())
+      {
+        const ContactSet<dim> &contacts = state->contacts;
+        std::vector<char> held(*std::max_element(contacts.node_block.begin(),
+                                                 contacts.node_block.end()) +
+                                 1,
+                               0);
+        for (const auto &pair : contacts.blocks)
+          held[pair[0]] = held[pair[1]] = 1;
+        for (const auto &node : contacts.held)
+          held[contacts.node_block[node.node]] = 1;
+        for (const auto &roller : contacts.rollers)
+          held[contacts.node_block[roller.node]] = 1;
+        const auto loose = std::find(held.begin(), held.end(), 0);
+        if (loose != held.end())
+          unused += "; block " + std::to_string(loose - held.begin()) +
+                    " has no joint and no support (joints are made only "
+                    "where faces of two blocks coincide, to 'Masonry/"
+                    "Coincidence tolerance' of the smallest cell)";
+      }
     if (report.status == lcp::Status::infeasible)
       return structure +
              " has no equilibrium: its supports and joints cannot "
