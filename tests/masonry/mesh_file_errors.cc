@@ -227,6 +227,16 @@ main()
                     "no")
               << "\n";
   }
+  // A square inside a flat trapezoid, 5.3 from the origin: the trapezoid's
+  // bounding box (10 wide) is wider than its diagonals (5.4), and the grid
+  // the overlap checks search by never compared the two (a review: solved,
+  // exit 0).
+  bad("a block inside a flat trapezoid",
+      header + "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
+               "$Nodes\n8\n1 5.3 0 0\n2 15.3 0 0\n3 10.7 0.3 0\n4 9.9 0.3 0\n"
+               "5 9.3 0 0\n6 10.3 0 0\n7 10.3 0.2 0\n8 9.3 0.2 0\n$EndNodes\n"
+               "$Elements\n4\n1 3 2 1 1 1 2 3 4\n2 3 2 1 2 5 6 7 8\n"
+               "3 1 2 7 11 1 2\n4 1 2 7 12 5 6\n$EndElements\n");
   bad("a cell with no area",
       header + "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 3 0 0\n$EndNodes\n"
                "$Elements\n1\n1 3 2 1 1 1 2 3 4\n$EndElements\n");

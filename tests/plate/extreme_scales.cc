@@ -7,24 +7,32 @@
 //     review (2026-11-27): tnnmg ended 'converged' 3.7e-4 off, its KKT
 //     residuals relative to the largest force hiding the others' errors.
 //  2. a load of -1e-150: the deflection of the load -1 times 1e-150 (tnnmg
-//     ended with NaN, blaming its iteration limit).
+//     ended with NaN, blaming its iteration limit);
+//  3. an obstacle at 1e150 or 1e-150 above the plate, under a load far
+//     too weak to matter: tnnmg as pdas (scaled by the load alone in a
+//     first fix, tnnmg broke down).
 #include "plate_runs.h"
 
 #include <cmath>
 #include <iostream>
+#include <utility>
 
 using namespace plate_runs;
 
 namespace
 {
   std::string
-  free_plate(const std::string &length, const std::string &force)
+  free_plate(const std::string &length,
+             const std::string &force,
+             const std::string &obstacle = "none")
   {
     return "subsection Geometry\n  set Length x = " + length +
            "\n  set Length y = " + length +
            "\n  set Elements x = 20\n  set Elements y = 20\nend\n"
            "subsection Material\n  set Name = steel\nend\n"
-           "subsection Obstacle\n  set Function = none\nend\n"
+           "subsection Obstacle\n  set Function = " +
+           obstacle +
+           "\nend\n"
            "subsection Load\n  set Force = " +
            force + "\nend\n";
   }
@@ -67,6 +75,29 @@ main()
                 << (faint.report.converged() &&
                         close(faint.results().min_deflection,
                               1e-150 * reference) ?
+                      "yes" :
+                      "NO")
+                << "\n";
+    }
+  for (const auto &[obstacle, force] :
+       {std::pair<std::string, std::string>{"1e150", "-1e-20"},
+        {"1e-150", "0"}})
+    {
+      const Run lifted = run_plate("lifted_" + obstacle,
+                                   free_plate("100", force, obstacle),
+                                   "tnnmg");
+      const Run direct = run_plate("lifted_pdas_" + obstacle,
+                                   free_plate("100", force, obstacle),
+                                   "pdas");
+      std::cout << "obstacle " << obstacle << " above, load " << force
+                << ", tnnmg: "
+                << (lifted.report.converged() ? "converged" : "not converged")
+                << ", as pdas: "
+                << (lifted.report.converged() && direct.report.converged() &&
+                        close(lifted.results().centre_deflection,
+                              direct.results().centre_deflection) &&
+                        lifted.results().n_contact ==
+                          direct.results().n_contact ?
                       "yes" :
                       "NO")
                 << "\n";

@@ -487,12 +487,21 @@ namespace unilateral::lcp
                               TruncatedMultigrid::Cycle::v);
       const unsigned int finest = mg.n_levels() - 1;
 
-      // The LCP solved for u / s, s the largest load: the products of the
-      // conjugate gradients and the line search are of the order of u^2
-      // |A|, which loads of 1e-150 take below the smallest double (and
-      // 1e200 beyond the largest), where they become NaN.
-      const double load_norm  = problem.b.lpNorm<Eigen::Infinity>();
-      const double load_scale = load_norm > 0 ? load_norm : 1.0;
+      // The LCP solved for u / s, s the size the answer will have: the
+      // products of the conjugate gradients and the line search are of the
+      // order of u^2 |A|, which a load of 1e-150 takes below the smallest
+      // double (and 1e200 beyond the largest), where they become NaN. The
+      // answer is about as large as the loads' deflection |b| / d (d the
+      // mean diagonal) or the highest bound above zero, which lifts it at
+      // least that far.
+      double highest_bound = 0;
+      for (Index k = 0; k < problem.n_constrained(); ++k)
+        if (std::isfinite(problem.lower_bound[k]))
+          highest_bound = std::max(highest_bound, problem.lower_bound[k]);
+      const double answer_size = std::max(problem.b.lpNorm<Eigen::Infinity>() /
+                                            diagonal_scale(problem.A),
+                                          highest_bound);
+      const double load_scale  = answer_size > 0 ? answer_size : 1.0;
 
       // The loads of every level, restricted from the finest.
       std::vector<LevelVector> b(mg.n_levels());

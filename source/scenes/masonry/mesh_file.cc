@@ -538,6 +538,25 @@ namespace unilateral::masonry
       return true;
     }
 
+    /// The largest side of the cells' bounding boxes: a grid of this
+    /// spacing has every box within two grid cells along each axis, so that
+    /// a box is found through the grid cells of its corners. (A cell's
+    /// diameter is not enough: a flat trapezoid's box is wider than its
+    /// diagonals, and a block beside its middle was never compared.)
+    template <int dim>
+    double
+    largest_box_side(const dealii::Triangulation<dim> &triangulation)
+    {
+      double side = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          const auto box = cell->bounding_box().get_boundary_points();
+          for (unsigned int d = 0; d < dim; ++d)
+            side = std::max(side, box.second[d] - box.first[d]);
+        }
+      return side;
+    }
+
     /**
      * Blocks that overlap: a vertex or the centre of a cell strictly inside
      * a cell of another block (by more than a millionth of the cell, in its
@@ -556,10 +575,8 @@ namespace unilateral::masonry
           std::make_unique<dealii::MappingFE<dim>>(dealii::FE_SimplexP<dim>(1));
       else
         mapping = std::make_unique<dealii::MappingQ<dim>>(1);
-      double spacing = 0;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        spacing = std::max(spacing, cell->diameter());
-      using Key = std::array<long long, dim>;
+      const double spacing = largest_box_side(triangulation);
+      using Key            = std::array<long long, dim>;
       std::map<Key, std::vector<unsigned int>> grid;
       std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
         cells;
@@ -752,13 +769,10 @@ namespace unilateral::masonry
     {
       using Cell = typename dealii::Triangulation<dim>::active_cell_iterator;
       std::vector<Cell> cells;
-      double            spacing = 0;
       for (const auto &cell : triangulation.active_cell_iterators())
-        {
-          cells.push_back(cell);
-          spacing = std::max(spacing, cell->diameter());
-        }
-      using Key = std::array<long long, dim>;
+        cells.push_back(cell);
+      const double spacing = largest_box_side(triangulation);
+      using Key            = std::array<long long, dim>;
       std::map<Key, std::vector<unsigned int>> grid;
       auto corner_keys = [&](const Cell &cell) {
         const auto       box = cell->bounding_box().get_boundary_points();
@@ -900,9 +914,11 @@ namespace unilateral::masonry
                  (dim == 2 ? "curve" : "surface") +
                  " lies between two cells that share its nodes (a joint "
                  "between blocks that share nodes is in a physical group, or "
-                 "the file has none, and gmsh saved every " +
+                 "the file has none or was saved with Mesh.SaveAll, and gmsh "
+                 "saved every " +
                  (dim == 2 ? "curve" : "surface") +
-                 ", the joints' too); put the blocks into physical " +
+                 ", the joints' too); save without SaveAll, put the blocks "
+                 "into physical " +
                  (dim == 2 ? "surfaces" : "volumes") +
                  " and only the outer boundaries the supports name into "
                  "physical " +
