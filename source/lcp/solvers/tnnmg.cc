@@ -192,7 +192,7 @@ namespace unilateral::lcp
                     const Problem            &problem,
                     unsigned int              level,
                     const LevelVector        &b,
-                    double                    load_scale) const;
+                    double                    answer_scale) const;
 
       LevelOutcome
       iterate(TruncatedMultigrid &mg,
@@ -252,7 +252,7 @@ namespace unilateral::lcp
                          const Problem            &problem,
                          const unsigned int        level,
                          const LevelVector        &b,
-                         const double              load_scale) const
+                         const double              answer_scale) const
     {
       const bool                finest = level + 1 == mg.n_levels();
       const Hierarchy::Level   &data   = hierarchy.levels[level];
@@ -265,7 +265,7 @@ namespace unilateral::lcp
       Vector lower = Vector::Constant(data.n_unknowns,
                                       -std::numeric_limits<double>::infinity());
       for (std::size_t k = 0; k < constrained.size(); ++k)
-        lower[constrained[k]] = bounds[k] / load_scale;
+        lower[constrained[k]] = bounds[k] / answer_scale;
       Vector marks = Vector::Zero(data.n_unknowns);
       for (const Index i : constrained)
         marks[i] = 1;
@@ -498,14 +498,14 @@ namespace unilateral::lcp
       for (Index k = 0; k < problem.n_constrained(); ++k)
         if (std::isfinite(problem.lower_bound[k]))
           highest_bound = std::max(highest_bound, problem.lower_bound[k]);
-      const double answer_size = std::max(problem.b.lpNorm<Eigen::Infinity>() /
+      const double answer_size  = std::max(problem.b.lpNorm<Eigen::Infinity>() /
                                             diagonal_scale(problem.A),
                                           highest_bound);
-      const double load_scale  = answer_size > 0 ? answer_size : 1.0;
+      const double answer_scale = answer_size > 0 ? answer_size : 1.0;
 
       // The loads of every level, restricted from the finest.
       std::vector<LevelVector> b(mg.n_levels());
-      mg.to_nodes(finest, problem.b / load_scale, b[finest]);
+      mg.to_nodes(finest, problem.b / answer_scale, b[finest]);
       for (unsigned int level = finest; level-- > 0;)
         mg.restrict_to(level, b[level + 1], b[level]);
 
@@ -519,8 +519,8 @@ namespace unilateral::lcp
       LevelProblem coarse_lcp;
       for (unsigned int level = first; level <= finest; ++level)
         {
-          LevelProblem lcp =
-            level_problem(mg, hierarchy, problem, level, b[level], load_scale);
+          LevelProblem lcp = level_problem(
+            mg, hierarchy, problem, level, b[level], answer_scale);
           if (level > first)
             start_from_coarser(mg, level, coarse_lcp, lcp, u);
           for (std::size_t i = 0; i < u.size(); ++i)
@@ -561,7 +561,7 @@ namespace unilateral::lcp
           *progress << "    tnnmg: one product with A on the finest level "
                     << fastest << " s" << std::endl;
         }
-      solution.u        = load_scale * mg.from_nodes(finest, u);
+      solution.u        = answer_scale * mg.from_nodes(finest, u);
       report.iterations = outcome.iterations;
       if (!solution.u.allFinite())
         {
