@@ -576,10 +576,9 @@ namespace unilateral::lcp
           report.message =
             "TNNMG did not reach 'Tolerance' within " +
             std::to_string(iteration_limit(100)) +
-            " iterations on the finest level (as on "
-            "elements several times longer than wide, where "
-            "its block smoother is slow): raise 'Solver/Maximum iterations', or use "
-            "'Solver/Method = pdas'";
+            " iterations on the finest level (as on elements several times "
+            "longer than wide, where its block smoother is slow): raise "
+            "'Solver/Maximum iterations', or use 'Solver/Method = pdas'";
         }
     }
   } // namespace

@@ -538,24 +538,68 @@ namespace unilateral::masonry
       return true;
     }
 
-    /// The largest side of the cells' bounding boxes: a grid of this
-    /// spacing has every box within two grid cells along each axis, so that
-    /// a box is found through the grid cells of its corners. (A cell's
-    /// diameter is not enough: a flat trapezoid's box is wider than its
-    /// diagonals, and a block beside its middle was never compared.)
+    /**
+     * The active cells of a mesh by the grid cells their bounding boxes
+     * touch, for finding the cells near a point or near another cell. The
+     * spacing is the largest side of a box, so that a box touches at most
+     * two grid cells along each axis and is found through those of its
+     * corners. (A cell's diameter is not enough: a flat trapezoid's box is
+     * wider than its diagonals, and a block beside its middle was never
+     * compared.)
+     */
     template <int dim>
-    double
-    largest_box_side(const dealii::Triangulation<dim> &triangulation)
+    struct BoxGrid
     {
-      double side = 0;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        {
-          const auto box = cell->bounding_box().get_boundary_points();
-          for (unsigned int d = 0; d < dim; ++d)
-            side = std::max(side, box.second[d] - box.first[d]);
-        }
-      return side;
-    }
+      using Cell = typename dealii::Triangulation<dim>::active_cell_iterator;
+      using Key  = std::array<long long, dim>;
+
+      std::vector<Cell>                        cells;
+      double                                   spacing = 0;
+      std::map<Key, std::vector<unsigned int>> grid;
+
+      explicit BoxGrid(const dealii::Triangulation<dim> &triangulation)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            cells.push_back(cell);
+            const auto box = cell->bounding_box().get_boundary_points();
+            for (unsigned int d = 0; d < dim; ++d)
+              spacing = std::max(spacing, box.second[d] - box.first[d]);
+          }
+        for (unsigned int i = 0; i < cells.size(); ++i)
+          for (const Key &k : box_keys(cells[i]))
+            grid[k].push_back(i);
+      }
+
+      /// The grid cells @p cell's bounding box touches.
+      std::vector<Key>
+      box_keys(const Cell &cell) const
+      {
+        const auto       box = cell->bounding_box().get_boundary_points();
+        const Key        lo  = grid_key<dim>(box.first, spacing);
+        const Key        hi  = grid_key<dim>(box.second, spacing);
+        std::vector<Key> keys;
+        for (unsigned int probe = 0; probe < (1u << dim); ++probe)
+          {
+            Key k;
+            for (unsigned int d = 0; d < dim; ++d)
+              k[d] = (probe >> d) & 1 ? hi[d] : lo[d];
+            keys.push_back(k);
+          }
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        return keys;
+      }
+
+      /// The cells whose boxes touch the grid cell of @p p.
+      const std::vector<unsigned int> &
+      near(const dealii::Point<dim> &p) const
+      {
+        static const std::vector<unsigned int> none;
+        const auto found = grid.find(grid_key<dim>(p, spacing));
+        return found == grid.end() ? none : found->second;
+      }
+    };
 
     /**
      * Blocks that overlap: a vertex or the centre of a cell strictly inside
@@ -565,9 +609,9 @@ namespace unilateral::masonry
      */
     template <int dim>
     void
-    check_no_overlap(const dealii::Triangulation<dim> &triangulation,
-                     const bool                        simplex,
-                     const std::string                &file)
+    check_no_overlap(const BoxGrid<dim> &boxes,
+                     const bool          simplex,
+                     const std::string  &file)
     {
       std::unique_ptr<dealii::Mapping<dim>> mapping;
       if (simplex)
@@ -575,30 +619,7 @@ namespace unilateral::masonry
           std::make_unique<dealii::MappingFE<dim>>(dealii::FE_SimplexP<dim>(1));
       else
         mapping = std::make_unique<dealii::MappingQ<dim>>(1);
-      const double spacing = largest_box_side(triangulation);
-      using Key            = std::array<long long, dim>;
-      std::map<Key, std::vector<unsigned int>> grid;
-      std::vector<typename dealii::Triangulation<dim>::active_cell_iterator>
-        cells;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        {
-          const auto box = cell->bounding_box();
-          const Key  lo =
-            grid_key<dim>(box.get_boundary_points().first, spacing);
-          const Key hi =
-            grid_key<dim>(box.get_boundary_points().second, spacing);
-          Key k = lo;
-          // Every grid cell the box touches (at most 2 per axis).
-          for (unsigned int probe = 0; probe < (1u << dim); ++probe)
-            {
-              for (unsigned int d = 0; d < dim; ++d)
-                k[d] = (probe >> d) & 1 ? hi[d] : lo[d];
-              auto &list = grid[k];
-              if (list.empty() || list.back() != cells.size())
-                list.push_back(static_cast<unsigned int>(cells.size()));
-            }
-          cells.push_back(cell);
-        }
+      const auto      &cells           = boxes.cells;
       constexpr double margin          = 1e-6;
       auto             strictly_inside = [&](const dealii::Point<dim> &unit) {
         double sum = 0;
@@ -621,10 +642,7 @@ namespace unilateral::masonry
             }
           for (const auto &p : points)
             {
-              const auto found = grid.find(grid_key<dim>(p, spacing));
-              if (found == grid.end())
-                continue;
-              for (const unsigned int other : found->second)
+              for (const unsigned int other : boxes.near(p))
                 {
                   const auto &o = cells[other];
                   if (o->material_id() == cell->material_id() ||
@@ -696,10 +714,11 @@ namespace unilateral::masonry
                   else
                     {
                       // deal.II's lexicographic order: diagonals 0-3, 1-2.
-                      for (const auto &t : {std::array<unsigned, 3>{0, 1, 3},
-                                            std::array<unsigned, 3>{0, 3, 2},
-                                            std::array<unsigned, 3>{0, 1, 2},
-                                            std::array<unsigned, 3>{1, 3, 2}})
+                      const unsigned int triangles[4][3] = {{0, 1, 3},
+                                                            {0, 3, 2},
+                                                            {0, 1, 2},
+                                                            {1, 3, 2}};
+                      for (const auto &t : triangles)
                         axes.push_back(
                           dealii::cross_product_3d(v(t[1]) - v(t[0]),
                                                    v(t[2]) - v(t[0])));
@@ -764,35 +783,10 @@ namespace unilateral::masonry
      */
     template <int dim>
     void
-    check_cells_separated(const dealii::Triangulation<dim> &triangulation,
-                          const std::string                &file)
+    check_cells_separated(const BoxGrid<dim> &boxes, const std::string &file)
     {
-      using Cell = typename dealii::Triangulation<dim>::active_cell_iterator;
-      std::vector<Cell> cells;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        cells.push_back(cell);
-      const double spacing = largest_box_side(triangulation);
-      using Key            = std::array<long long, dim>;
-      std::map<Key, std::vector<unsigned int>> grid;
-      auto corner_keys = [&](const Cell &cell) {
-        const auto       box = cell->bounding_box().get_boundary_points();
-        const Key        lo  = grid_key<dim>(box.first, spacing);
-        const Key        hi  = grid_key<dim>(box.second, spacing);
-        std::vector<Key> keys;
-        for (unsigned int probe = 0; probe < (1u << dim); ++probe)
-          {
-            Key k;
-            for (unsigned int d = 0; d < dim; ++d)
-              k[d] = (probe >> d) & 1 ? hi[d] : lo[d];
-            keys.push_back(k);
-          }
-        std::sort(keys.begin(), keys.end());
-        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-        return keys;
-      };
-      for (unsigned int i = 0; i < cells.size(); ++i)
-        for (const Key &k : corner_keys(cells[i]))
-          grid[k].push_back(i);
+      using Cell        = typename BoxGrid<dim>::Cell;
+      const auto &cells = boxes.cells;
 
       auto vertices = [](const Cell &cell) {
         std::vector<dealii::Point<dim>> v;
@@ -804,8 +798,8 @@ namespace unilateral::masonry
         {
           const Cell               &a = cells[i];
           std::vector<unsigned int> near;
-          for (const Key &k : corner_keys(a))
-            for (const unsigned int j : grid[k])
+          for (const auto &k : boxes.box_keys(a))
+            for (const unsigned int j : boxes.grid.at(k))
               if (j > i && cells[j]->material_id() != a->material_id())
                 near.push_back(j);
           std::sort(near.begin(), near.end());
@@ -1130,8 +1124,11 @@ namespace unilateral::masonry
               }
           }
 
-    check_no_overlap<dim>(triangulation, scan.simplex, file_name);
-    check_cells_separated<dim>(triangulation, file_name);
+    {
+      const BoxGrid<dim> boxes(triangulation);
+      check_no_overlap<dim>(boxes, scan.simplex, file_name);
+      check_cells_separated<dim>(boxes, file_name);
+    }
 
     BoundaryNames &names = result.boundaries;
     names.source         = std::filesystem::path(file_name).filename().string();
