@@ -49,7 +49,9 @@ namespace unilateral::masonry
 
     // The pattern of A: column j holds every variable that shares a cell
     // with j. Built column by column from the variable-to-cell incidence,
-    // with a marker array instead of sets.
+    // with a marker array instead of sets, in two passes (count, then
+    // write into A's own arrays), so that no pattern is built beside A's
+    // and A's size is known exactly before it is allocated.
     void
     make_pattern(const int                       n,
                  const std::vector<std::size_t> &cell_start,
@@ -72,49 +74,49 @@ namespace unilateral::masonry
             cells_of[fill[cell_variables[k]]++] = static_cast<unsigned int>(c);
       }
 
-      // The pattern is built here and copied into A (indices and values):
-      // refuse a wall whose matrix cannot fit before building it. Each cell
-      // couples at most its variables squared (shared pairs counted twice).
-      double most_entries = 0;
-      for (std::size_t c = 0; c < n_cells; ++c)
-        most_entries += std::pow(cell_start[c + 1] - cell_start[c], 2.0);
-      const double entries_bound = std::min(most_entries, double(n) * n);
-      memory::require(entries_bound * (2 * sizeof(lcp::Index) + 8),
-                      "the matrix A~ of " + std::to_string(n) + " unknowns");
-      std::vector<lcp::Index> outer(n + 1, 0);
-      // Room for the bound at once: a vector that grows by doubling holds
-      // its old and its new buffer at the moment it grows, up to three
-      // times the pattern, more than the check above allowed.
-      std::vector<lcp::Index> inner;
-      inner.reserve(static_cast<std::size_t>(entries_bound));
+      // Calls visit(i) once for each variable i coupled with j.
       std::vector<int> marker(n, -1);
-      for (int j = 0; j < n; ++j)
-        {
-          const std::size_t first = inner.size();
-          for (std::size_t k = cells_start[j]; k < cells_start[j + 1]; ++k)
-            {
-              const unsigned int c = cells_of[k];
-              for (std::size_t l = cell_start[c]; l < cell_start[c + 1]; ++l)
+      const auto       for_each_coupled = [&](const int j, auto &&visit) {
+        for (std::size_t k = cells_start[j]; k < cells_start[j + 1]; ++k)
+          {
+            const unsigned int c = cells_of[k];
+            for (std::size_t l = cell_start[c]; l < cell_start[c + 1]; ++l)
+              if (const int i = cell_variables[l]; marker[i] != j)
                 {
-                  const int i = cell_variables[l];
-                  if (marker[i] != j)
-                    {
-                      marker[i] = j;
-                      inner.push_back(i);
-                    }
+                  marker[i] = j;
+                  visit(i);
                 }
-            }
-          // Every variable belongs to some cell, so the diagonal is present.
-          std::sort(inner.begin() + first, inner.end());
-          outer[j + 1] = static_cast<lcp::Index>(inner.size());
-        }
+          }
+      };
+
+      std::size_t entries = 0;
+      for (int j = 0; j < n; ++j)
+        for_each_coupled(j, [&entries](int) { ++entries; });
+      if (entries >
+          static_cast<std::size_t>(std::numeric_limits<lcp::Index>::max()))
+        throw OutOfMemory("the matrix A~ of " + std::to_string(n) +
+                          " unknowns has " + std::to_string(entries) +
+                          " entries, more than 32-bit indices can count");
+      memory::require(static_cast<double>(entries) *
+                        (sizeof(lcp::Index) + sizeof(double)),
+                      "the matrix A~ of " + std::to_string(n) + " unknowns");
 
       A.resize(n, n);
       A.makeCompressed();
-      A.resizeNonZeros(static_cast<lcp::Index>(inner.size()));
-      std::copy(outer.begin(), outer.end(), A.outerIndexPtr());
-      std::copy(inner.begin(), inner.end(), A.innerIndexPtr());
-      std::fill(A.valuePtr(), A.valuePtr() + inner.size(), 0.0);
+      A.resizeNonZeros(static_cast<lcp::Index>(entries));
+      lcp::Index *const outer = A.outerIndexPtr();
+      lcp::Index *const inner = A.innerIndexPtr();
+      std::fill(marker.begin(), marker.end(), -1);
+      outer[0] = 0;
+      for (int j = 0; j < n; ++j)
+        {
+          lcp::Index end = outer[j];
+          for_each_coupled(j, [&](const int i) { inner[end++] = i; });
+          // Every variable belongs to some cell, so the diagonal is present.
+          std::sort(inner + outer[j], inner + end);
+          outer[j + 1] = end;
+        }
+      std::fill(A.valuePtr(), A.valuePtr() + entries, 0.0);
     }
   } // namespace
 
@@ -134,6 +136,9 @@ namespace unilateral::masonry
                        dealii::update_quadrature_points)
     , dofs_per_cell(discretisation.fe->n_dofs_per_cell())
     , component(dofs_per_cell)
+    , reuse_allowed(discretisation.fe->n_dofs_per_line() <= 1 &&
+                    (dim < 3 || discretisation.fe->n_dofs_per_quad(0) <= 1))
+    , body_rhs(dofs_per_cell)
     , matrix(dofs_per_cell * dofs_per_cell)
     , rhs(dofs_per_cell)
   {
@@ -149,44 +154,78 @@ namespace unilateral::masonry
   }
 
   template <int dim>
+  bool
+  CellSystem<dim>::repeats_previous(
+    const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int material_class)
+  {
+    const unsigned int n_vertices = cell->n_vertices();
+    bool repeats = reuse_allowed && material_class == previous_class &&
+                   previous_shape.size() == n_vertices;
+    double size = 0;
+    for (unsigned int v = 1; v < n_vertices && repeats; ++v)
+      size = std::max(size, (cell->vertex(v) - cell->vertex(0)).norm());
+    for (unsigned int v = 1; v < n_vertices && repeats; ++v)
+      repeats =
+        ((cell->vertex(v) - cell->vertex(0)) - previous_shape[v]).norm() <=
+        1e-13 * size;
+    if (!repeats)
+      {
+        previous_shape.resize(n_vertices);
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          previous_shape[v] = cell->vertex(v) - cell->vertex(0);
+        previous_class = material_class;
+      }
+    return repeats;
+  }
+
+  template <int dim>
   void
   CellSystem<dim>::reinit(
     const typename dealii::DoFHandler<dim>::active_cell_iterator &cell)
   {
-    fe_values.reinit(cell);
-    const MaterialClass &material =
-      loads.classes[loads.class_of_block[cell->material_id()]];
-    const double                 lambda = material.lambda();
-    const double                 mu     = material.mu();
-    const dealii::Tensor<1, dim> body_force =
-      material.density * loads.supports->gravity;
-
-    // Linear elasticity, as in step-8 (plane strain in 2D).
-    std::fill(matrix.begin(), matrix.end(), 0.0);
-    std::fill(rhs.begin(), rhs.end(), 0.0);
-    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+    const unsigned int material_class =
+      loads.class_of_block[cell->material_id()];
+    if (!repeats_previous(cell, material_class))
       {
-        const double JxW = fe_values.JxW(q);
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        fe_values.reinit(cell);
+        const MaterialClass         &material = loads.classes[material_class];
+        const double                 lambda   = material.lambda();
+        const double                 mu       = material.mu();
+        const dealii::Tensor<1, dim> body_force =
+          material.density * loads.supports->gravity;
+
+        // Linear elasticity, as in step-8 (plane strain in 2D).
+        std::fill(matrix.begin(), matrix.end(), 0.0);
+        std::fill(body_rhs.begin(), body_rhs.end(), 0.0);
+        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
           {
-            const unsigned int            ci = component[i];
-            const dealii::Tensor<1, dim> &gi = fe_values.shape_grad(i, q);
-            for (unsigned int j = i; j < dofs_per_cell; ++j)
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
               {
-                const unsigned int            cj = component[j];
-                const dealii::Tensor<1, dim> &gj = fe_values.shape_grad(j, q);
-                double value = gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
-                if (ci == cj)
-                  value += (gi * gj) * mu;
-                matrix[i * dofs_per_cell + j] += value * JxW;
+                const unsigned int            ci = component[i];
+                const dealii::Tensor<1, dim> &gi = fe_values.shape_grad(i, q);
+                for (unsigned int j = i; j < dofs_per_cell; ++j)
+                  {
+                    const unsigned int            cj = component[j];
+                    const dealii::Tensor<1, dim> &gj =
+                      fe_values.shape_grad(j, q);
+                    double value =
+                      gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
+                    if (ci == cj)
+                      value += (gi * gj) * mu;
+                    matrix[i * dofs_per_cell + j] += value * JxW;
+                  }
+                if (body_force[ci] != 0)
+                  body_rhs[i] +=
+                    fe_values.shape_value(i, q) * body_force[ci] * JxW;
               }
-            if (body_force[ci] != 0)
-              rhs[i] += fe_values.shape_value(i, q) * body_force[ci] * JxW;
           }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            matrix[i * dofs_per_cell + j] = matrix[j * dofs_per_cell + i];
       }
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      for (unsigned int j = 0; j < i; ++j)
-        matrix[i * dofs_per_cell + j] = matrix[j * dofs_per_cell + i];
+    std::copy(body_rhs.begin(), body_rhs.end(), rhs.begin());
 
     if (traction_on.empty() || loads.supports->zero_traction)
       return;
