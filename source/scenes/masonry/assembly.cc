@@ -123,7 +123,8 @@ namespace unilateral::masonry
   template <int dim>
   CellSystem<dim>::CellSystem(const Discretisation<dim> &discretisation,
                               const LoadData<dim>       &loads)
-    : loads(loads)
+    : discretisation(discretisation)
+    , loads(loads)
     , fe_values(*discretisation.mapping,
                 *discretisation.fe,
                 *discretisation.quadrature,
@@ -235,25 +236,73 @@ namespace unilateral::masonry
             cell->face(f)->boundary_id() >= traction_on.size() ||
             traction_on[cell->face(f)->boundary_id()].empty())
           continue;
+        // Where several traction entries cover a point, it is loaded once.
+        const auto &supports = traction_on[cell->face(f)->boundary_id()];
+        const bool  everywhere =
+          std::any_of(supports.begin(), supports.end(), [](const auto *s) {
+            return s->region == nullptr;
+          });
+        const auto inside = [&supports](const dealii::Point<dim> &x) {
+          return std::any_of(supports.begin(),
+                             supports.end(),
+                             [&x](const Support<dim> *support) {
+                               return support->region->value(x) > 0.5;
+                             });
+        };
+        FaceRegionRule<dim> part;
+        part.coverage = FaceRegionRule<dim>::Coverage::whole;
+        if (!everywhere)
+          part = face_region_rule<dim>(cell, f, inside);
+        if (part.coverage == FaceRegionRule<dim>::Coverage::none)
+          continue;
+        if (part.coverage == FaceRegionRule<dim>::Coverage::partial)
+          {
+            add_partial_face_load(cell, part);
+            continue;
+          }
         fe_face_values.reinit(cell, f);
+        dealii::Vector<double> t(dim);
         for (unsigned int q = 0; q < fe_face_values.n_quadrature_points; ++q)
           {
-            const dealii::Point<dim> &x = fe_face_values.quadrature_point(q);
-            // Where several traction entries cover a point, it is loaded
-            // once.
-            bool loaded = false;
-            for (const Support<dim> *support :
-                 traction_on[cell->face(f)->boundary_id()])
-              loaded = loaded || support->region == nullptr ||
-                       support->region->value(x) > 0.5;
-            if (!loaded)
-              continue;
-            dealii::Vector<double> t(dim);
-            loads.supports->traction->vector_value(x, t);
+            loads.supports->traction->vector_value(
+              fe_face_values.quadrature_point(q), t);
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               rhs[i] += fe_face_values.shape_value(i, q) * t[component[i]] *
                         fe_face_values.JxW(q);
           }
+      }
+  }
+
+  template <int dim>
+  void
+  CellSystem<dim>::add_partial_face_load(
+    const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+    const FaceRegionRule<dim>                                    &part)
+  {
+    dealii::FEValues<dim> values(*discretisation.mapping,
+                                 *discretisation.fe,
+                                 dealii::Quadrature<dim>(part.points,
+                                                         part.weights),
+                                 dealii::update_values |
+                                   dealii::update_jacobians |
+                                   dealii::update_quadrature_points);
+    values.reinit(cell);
+    dealii::Vector<double> t(dim);
+    for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+      {
+        // The face's measure from its reference tangents (face_region.h).
+        const dealii::DerivativeForm<1, dim, dim> &J = values.jacobian(q);
+        const dealii::Tensor<1, dim>               e_s =
+          dealii::apply_transformation(J, part.tangents[0]);
+        double measure = e_s.norm();
+        if constexpr (dim == 3)
+          measure = dealii::cross_product_3d(
+                      e_s, dealii::apply_transformation(J, part.tangents[1]))
+                      .norm();
+        loads.supports->traction->vector_value(values.quadrature_point(q), t);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          rhs[i] += values.shape_value(i, q) * t[component[i]] *
+                    part.weights[q] * measure;
       }
   }
 

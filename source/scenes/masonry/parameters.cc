@@ -319,7 +319,10 @@ namespace unilateral::masonry
                       "top",
                       dealii::Patterns::Anything(),
                       "Boundaries loaded by 'Traction'. Boundaries not named "
-                      "anywhere are traction free." +
+                      "anywhere are traction free. A traction restricted to "
+                      "a region loads exactly the part of each face inside "
+                      "it (a region narrower than a sixteenth of a face, "
+                      "inside the face, is missed)." +
                         where);
     prm.declare_entry("Traction",
                       "0; 0",

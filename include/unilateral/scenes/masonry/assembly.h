@@ -4,6 +4,7 @@
 #include <unilateral/scenes/masonry/change_of_variables.h>
 #include <unilateral/scenes/masonry/contact_detection.h>
 #include <unilateral/scenes/masonry/discretisation.h>
+#include <unilateral/scenes/masonry/face_region.h>
 #include <unilateral/scenes/masonry/parameters.h>
 #include <unilateral/scenes/masonry/supports.h>
 
@@ -58,11 +59,18 @@ namespace unilateral::masonry
       const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
       unsigned int material_class);
 
-    const LoadData<dim>      &loads;
-    dealii::FEValues<dim>     fe_values;
-    dealii::FEFaceValues<dim> fe_face_values;
-    const unsigned int        dofs_per_cell;
-    std::vector<unsigned int> component;
+    /// Adds the traction on the part of a face inside its region.
+    void
+    add_partial_face_load(
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+      const FaceRegionRule<dim>                                    &part);
+
+    const Discretisation<dim> &discretisation;
+    const LoadData<dim>       &loads;
+    dealii::FEValues<dim>      fe_values;
+    dealii::FEFaceValues<dim>  fe_face_values;
+    const unsigned int         dofs_per_cell;
+    std::vector<unsigned int>  component;
     /// The traction supports, by boundary id.
     std::vector<std::vector<const Support<dim> *>> traction_on;
     /// Whether the element allows reuse between translated cells (above).

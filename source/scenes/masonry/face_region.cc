@@ -1,0 +1,252 @@
+#include <unilateral/scenes/masonry/face_region.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/reference_cell.h>
+
+#include <algorithm>
+#include <array>
+
+namespace unilateral::masonry
+{
+  namespace
+  {
+    // Samples per side of a face: 16 to tell a face that is all inside or
+    // all outside, 64 along the lines of a face the region's edge cuts.
+    constexpr unsigned int samples      = 16;
+    constexpr unsigned int line_samples = 64;
+    constexpr unsigned int bisections   = 52; // to 2^-52 of the face
+    // Halvings of a piece in s while the area inside it is not converged.
+    constexpr unsigned int max_halvings = 24;
+
+    // The parts of [0, length] where inside(s) holds: the samples give the
+    // changes, bisection their places.
+    std::vector<std::pair<double, double>>
+    inside_intervals(const double                             length,
+                     const std::function<bool(const double)> &inside)
+    {
+      std::vector<std::pair<double, double>> parts;
+      bool                                   before = inside(0);
+      double                                 start  = 0;
+      for (unsigned int k = 1; k <= line_samples; ++k)
+        {
+          double     low  = length * (k - 1) / line_samples;
+          double     high = length * k / line_samples;
+          const bool now  = inside(high);
+          if (now == before)
+            continue;
+          for (unsigned int b = 0; b < bisections; ++b)
+            {
+              const double middle                     = 0.5 * (low + high);
+              (inside(middle) == before ? low : high) = middle;
+            }
+          const double edge = 0.5 * (low + high);
+          if (before)
+            parts.emplace_back(start, edge);
+          else
+            start = edge;
+          before = now;
+        }
+      if (before)
+        parts.emplace_back(start, length);
+      return parts;
+    }
+
+    // The pattern of a line of samples, for comparing two lines.
+    std::vector<bool>
+    sample_pattern(const double                             length,
+                   const std::function<bool(const double)> &inside,
+                   const unsigned int                       n)
+    {
+      std::vector<bool> pattern(n + 1);
+      for (unsigned int k = 0; k <= n; ++k)
+        pattern[k] = inside(length * k / n);
+      return pattern;
+    }
+
+    // The length of the parts.
+    double
+    total_length(const std::vector<std::pair<double, double>> &parts)
+    {
+      double length = 0;
+      for (const auto &[a, b] : parts)
+        length += b - a;
+      return length;
+    }
+  } // namespace
+
+  template <int dim>
+  FaceRegionRule<dim>
+  face_region_rule(
+    const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                            face,
+    const std::function<bool(const dealii::Point<dim> &)>        &inside)
+  {
+    using Rule = FaceRegionRule<dim>;
+    Rule rule;
+
+    // x(s, t) = p0 + s (p1 - p0) + t (p2 - p0) in the reference cell, t up
+    // to 1 on a quadrilateral, 1 - s on a triangle.
+    const dealii::ReferenceCell reference = cell->reference_cell();
+    const dealii::ReferenceCell face_reference =
+      reference.face_reference_cell(face);
+    const auto vertex = [&](const unsigned int v) {
+      return reference.template vertex<dim>(
+        reference.face_to_cell_vertices(face, v, 1));
+    };
+    const dealii::Point<dim> origin = vertex(0);
+    for (unsigned int d = 1; d < dim; ++d)
+      rule.tangents.push_back(vertex(d) - origin);
+    const bool triangle = face_reference == dealii::ReferenceCells::Triangle;
+    const auto reference_point = [&](const double s, const double t) {
+      dealii::Point<dim> p = origin + s * rule.tangents[0];
+      if constexpr (dim == 3)
+        p += t * rule.tangents[1];
+      return p;
+    };
+    // The real point of (s, t): the masonry scene's mappings (MappingQ(1),
+    // MappingFE of P1) map a face by its vertices alone, bilinearly on a
+    // quadrilateral and linearly on a line or triangle.
+    std::vector<dealii::Point<dim>> corner;
+    for (unsigned int v = 0; v < face_reference.n_vertices(); ++v)
+      corner.push_back(
+        cell->vertex(reference.face_to_cell_vertices(face, v, 1)));
+    const auto inside_at = [&](const double s, const double t) {
+      dealii::Point<dim> x = corner[0] + s * (corner[1] - corner[0]);
+      if constexpr (dim == 3)
+        {
+          x += t * (corner[2] - corner[0]);
+          if (!triangle)
+            x += s * t * (corner[3] - corner[2] - corner[1] + corner[0]);
+        }
+      return inside(x);
+    };
+    // The face as lines of the last parameter: in 2D the face itself, in
+    // 3D the lines of constant s, of length 1 (or 1 - s on a triangle).
+    const auto line_length = [&](const double s) {
+      return (dim == 3 && triangle) ? 1 - s : 1.0;
+    };
+    const auto line = [&](const double s) -> std::function<bool(double)> {
+      if constexpr (dim == 2)
+        return [&inside_at](const double u) { return inside_at(u, 0); };
+      else
+        return [&inside_at, s](const double t) { return inside_at(s, t); };
+    };
+
+    // Whole, none or partial, from the samples.
+    bool any_inside = false, any_outside = false;
+    for (unsigned int i = 0; i <= (dim == 3 ? samples : 0); ++i)
+      {
+        const double s = double(i) / samples;
+        for (const bool value :
+             sample_pattern(line_length(s), line(s), samples))
+          (value ? any_inside : any_outside) = true;
+      }
+    rule.coverage = !any_inside  ? Rule::Coverage::none :
+                    !any_outside ? Rule::Coverage::whole :
+                                   Rule::Coverage::partial;
+    if (rule.coverage != Rule::Coverage::partial)
+      return rule;
+
+    const dealii::QGauss<1> gauss(4);
+    // A Gauss rule on [a, b] of the inner parameter at outer (s, w_s).
+    const auto add_line =
+      [&](const double                                  s,
+          const double                                  w_s,
+          const std::vector<std::pair<double, double>> &parts) {
+        for (const auto &[a, b] : parts)
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              const double u = a + (b - a) * gauss.point(q)[0];
+              rule.points.push_back(dim == 3 ? reference_point(s, u) :
+                                               reference_point(u, 0));
+              rule.weights.push_back(w_s * (b - a) * gauss.weight(q));
+            }
+      };
+
+    if constexpr (dim == 2)
+      add_line(0, 1, inside_intervals(1.0, line(0)));
+    else
+      {
+        // Cut [0, 1] in s where the line's parts change in kind: their
+        // number, or whether an end of the line is inside (the region's
+        // edge crosses a face edge or turns back). Between such cuts the
+        // parts inside move smoothly with s.
+        const auto kind = [&](const double s) {
+          const auto parts = inside_intervals(line_length(s), line(s));
+          return std::array<double, 3>{
+            {double(parts.size()),
+             double(!parts.empty() && parts.front().first == 0),
+             double(!parts.empty() && parts.back().second == line_length(s))}};
+        };
+        std::vector<double> cuts{0};
+        auto                previous = kind(0);
+        for (unsigned int k = 1; k <= samples; ++k)
+          {
+            double     low     = double(k - 1) / samples;
+            double     high    = double(k) / samples;
+            const auto current = kind(high);
+            if (current == previous)
+              continue;
+            for (unsigned int b = 0; b < bisections; ++b)
+              {
+                const double middle                     = 0.5 * (low + high);
+                (kind(middle) == previous ? low : high) = middle;
+              }
+            cuts.push_back(0.5 * (low + high));
+            previous = current;
+          }
+        cuts.push_back(1);
+        // On each piece, Gauss points in s, halving a piece while its area
+        // inside differs from its halves' (a curved edge's chord behaves
+        // like a square root near where it touches a line of constant s).
+        struct Piece
+        {
+          double                                              a, b;
+          std::vector<std::vector<std::pair<double, double>>> lines;
+          double                                              area;
+        };
+        const auto make_piece = [&](const double a, const double b) {
+          Piece piece{a, b, {}, 0};
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              const double s = a + (b - a) * gauss.point(q)[0];
+              piece.lines.push_back(inside_intervals(line_length(s), line(s)));
+              piece.area +=
+                (b - a) * gauss.weight(q) * total_length(piece.lines.back());
+            }
+          return piece;
+        };
+        const std::function<void(const Piece &, unsigned int)> refine =
+          [&](const Piece &piece, const unsigned int depth) {
+            const double middle = 0.5 * (piece.a + piece.b);
+            const Piece  left   = make_piece(piece.a, middle);
+            const Piece  right  = make_piece(middle, piece.b);
+            if (depth >= max_halvings ||
+                std::abs(left.area + right.area - piece.area) <=
+                  1e-12 * (piece.b - piece.a))
+              for (const Piece *half : {&left, &right})
+                for (unsigned int q = 0; q < gauss.size(); ++q)
+                  add_line(half->a + (half->b - half->a) * gauss.point(q)[0],
+                           (half->b - half->a) * gauss.weight(q),
+                           half->lines[q]);
+            else
+              {
+                refine(left, depth + 1);
+                refine(right, depth + 1);
+              }
+          };
+        for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece)
+          refine(make_piece(cuts[piece], cuts[piece + 1]), 0);
+      }
+    return rule;
+  }
+
+  template FaceRegionRule<2>
+  face_region_rule(const dealii::DoFHandler<2>::active_cell_iterator &,
+                   unsigned int,
+                   const std::function<bool(const dealii::Point<2> &)> &);
+  template FaceRegionRule<3>
+  face_region_rule(const dealii::DoFHandler<3>::active_cell_iterator &,
+                   unsigned int,
+                   const std::function<bool(const dealii::Point<3> &)> &);
+} // namespace unilateral::masonry
