@@ -7,12 +7,14 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <thread>
 
 namespace
 {
@@ -113,11 +115,17 @@ main(int argc, char **argv)
   std::ofstream nowhere; // never opened: what is written to it is dropped
   // A run that fails on one rank may leave the others waiting in a
   // collective call for ever: the failing rank says why (whichever it is)
-  // and ends them all, with the run's exit code.
+  // and ends them all, with the run's exit code. Most failures come from
+  // the input, which every rank reads alike: the other ranks wait a moment
+  // before they speak, so that rank 0 writes summary.json and says why
+  // once before it ends them (all ranks aborting at once tore each
+  // other's lines and could end rank 0 before it had written the file).
   const auto end_every_rank = [rank, ranks](const std::string &message,
                                             const int          code) {
     if (ranks == 1)
       return;
+    if (rank != 0)
+      std::this_thread::sleep_for(std::chrono::seconds(2));
     std::cerr << "unilateral (rank " << rank << " of " << ranks
               << "): " << message << std::endl;
     MPI_Abort(MPI_COMM_WORLD, code);

@@ -109,7 +109,8 @@ namespace unilateral
         "0",
         dealii::Patterns::Double(0),
         "Most memory the run may use, in GB; 0: the machine's available "
-        "memory. Before building the matrix, ordering it and allocating a "
+        "memory. Under MPI it bounds each rank, against the memory its "
+        "machine has left (ranks on one machine share it). Before building the matrix, ordering it and allocating a "
         "Cholesky factor, the run checks that these fit, and stops with a "
         "message naming the parameters that make the problem smaller (and "
         "this one first where it, not the machine, is the bound) instead of "

@@ -189,7 +189,12 @@ namespace unilateral::lcp
                      torn.describe(subdomain) +
                      " is held by no support and no neighbour in some "
                      "direction, so a rigid motion of it is free and the "
-                     "problem has no unique solution";
+                     "problem has no unique solution; TFETI needs every "
+                     "rigid motion held: where the load drives it, the "
+                     "structure has no equilibrium; where it does not (a "
+                     "block that may slide unloaded on frictionless "
+                     "joints), the problem has solutions, which a method "
+                     "that does not tear the problem (pdas) finds";
           }
       }
     // Also where the load does not drive that motion (a 3D wall whose

@@ -148,7 +148,9 @@ namespace unilateral::lcp
                         max_outer,
                         "SMALBE's iterations (updates of the equality "
                         "multiplier); 'Maximum iterations' bounds the "
-                        "products with F.",
+                        "products with F in MPRGP's steps (besides them, "
+                        "the estimate of ||P F P|| takes 30 and each outer "
+                        "iteration one or two).",
                         Integer(1));
     }
 

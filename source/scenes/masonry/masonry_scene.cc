@@ -686,9 +686,10 @@ namespace unilateral::masonry
         << max_displacement << ", " << n_closed_contacts << " of "
         << quantity(s.n_constraints, "contact") << " closed\n";
     if (n_degenerate_contacts > 0)
-      out << "  " << quantity(n_degenerate_contacts, "closed contact")
-          << (n_degenerate_contacts == 1 ? " carries" : " carry")
-          << " no force (degenerate): where such "
+      out << "  " << quantity(n_degenerate_contacts, "contact")
+          << (n_degenerate_contacts == 1 ? " has" : " have")
+          << " zero gap and no force (degenerate: the solver counts them "
+             "closed or open by its path): where such "
              "contacts alone hold a block, other displacements with the same "
              "energy and contact forces solve the problem too\n";
     if (report.converged() &&

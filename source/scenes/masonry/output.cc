@@ -300,14 +300,23 @@ namespace unilateral::masonry
     const auto piece = [](const unsigned int r) {
       return "solution_000." + std::to_string(r) + ".vtu";
     };
-    write(n_ranks == 1 ? record_name : piece(rank), text);
+    // A rank without blocks (more ranks than blocks) writes no piece: an
+    // empty one has no points, which VTK reports as an error.
+    const auto has_blocks = [n_blocks, n_ranks](const unsigned int r) {
+      return n_blocks * (r + 1) / n_ranks > n_blocks * r / n_ranks;
+    };
+    if (n_ranks == 1)
+      write(record_name, text);
+    else if (has_blocks(rank))
+      write(piece(rank), text);
     if (rank != 0)
       return;
     if (n_ranks > 1)
       {
         std::vector<std::string> pieces;
         for (unsigned int r = 0; r < n_ranks; ++r)
-          pieces.push_back(piece(r));
+          if (has_blocks(r))
+            pieces.push_back(piece(r));
         std::ostringstream record;
         data_out.write_pvtu_record(record, pieces);
         // The record declares the point data only; the cell data above too.

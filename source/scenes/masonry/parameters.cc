@@ -427,7 +427,7 @@ namespace unilateral::masonry
                       "1",
                       List(Double(), 1, 64, ","),
                       "Density >= 0 of each material class; the body force "
-                      "is (0, -density * gravity).");
+                      "is density * 'Gravity' along 'Gravity direction'.");
     prm.declare_entry("Tags",
                       "",
                       dealii::Patterns::Anything(),
