@@ -266,6 +266,11 @@ namespace unilateral
     std::string
     memory_fix(const Scene &scene)
     {
+      // A limit the run has used up before its problem is built leaves no
+      // problem small enough: then raising it is the only fix.
+      if (memory::limit_binds() && memory::available() <= 0)
+        return "raise 'Memory limit': the program alone takes more than "
+               "that before it builds its problem";
       return std::string(memory::limit_binds() ?
                            "raise 'Memory limit' (it is below the machine's "
                            "available memory) or " :
@@ -273,7 +278,7 @@ namespace unilateral
              (memory::address_space_limit_binds() ?
                 "raise the address-space limit ('ulimit -v') or " :
                 "") +
-             "make the problem smaller (" + scene.size_parameters() + ")";
+             "make the problem smaller (now " + scene.size_parameters() + ")";
     }
 
     // A run that failed after its directory was made says so there, so

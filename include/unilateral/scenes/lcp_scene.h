@@ -25,7 +25,7 @@ namespace unilateral
     std::string
     size_parameters() const override
     {
-      return "the LCP in 'LCP/Matrix file' = " + matrix_file;
+      return "'LCP/Matrix file' = " + matrix_file;
     }
 
     /// A matrix file of 20 MB or more: the size of problem from which huge

@@ -847,7 +847,7 @@ namespace unilateral::masonry
   MasonryScene<dim>::size_parameters() const
   {
     const std::string refinement =
-      " or 'Masonry/Refinement' = " +
+      ", 'Masonry/Refinement' = " +
       std::to_string(parameters.geometry.refinement);
     if (parameters.geometry.from_mesh_file)
       return "'Masonry/Mesh file' = " + parameters.geometry.mesh_file +

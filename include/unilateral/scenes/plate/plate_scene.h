@@ -67,7 +67,7 @@ namespace unilateral::plate
     {
       return "'Plate/Geometry/Elements x' = " +
              std::to_string(parameters.geometry.n_x) +
-             " or 'Elements y' = " + std::to_string(parameters.geometry.n_y);
+             ", 'Elements y' = " + std::to_string(parameters.geometry.n_y);
     }
 
     /// A clamped plate's stiffness is positive definite: 'singular' can
