@@ -365,17 +365,23 @@ namespace unilateral
                          directory.string() + "' (its message says why)");
     }
 
+    const std::string byte_order_mark = "\xEF\xBB\xBF";
+
     /**
      * Refuse a parameter file whose 'include' lines lead back to a file
      * already being read: deal.II's parser would recurse until the stack
-     * overflows (a crash with no message). Include paths are looked up as
+     * overflows (a crash with no message). Refuse an included file that
+     * starts with a UTF-8 byte-order mark: the parser, which opens included
+     * files itself, takes the mark for part of the first line and refuses
+     * that line, which looks well-formed in every editor (the main file's
+     * mark is skipped, parse_parameter_file). Include paths are looked up as
      * the parser does, from the working directory, and else beside the
      * including file; one that exists nowhere is left to the parser's own
      * message.
      */
     void
-    refuse_include_cycles(const std::filesystem::path        &file,
-                          std::vector<std::filesystem::path> &reading)
+    check_included_files(const std::filesystem::path        &file,
+                         std::vector<std::filesystem::path> &reading)
     {
       const std::filesystem::path canonical =
         std::filesystem::weakly_canonical(file);
@@ -387,6 +393,17 @@ namespace unilateral
       reading.push_back(canonical);
       std::ifstream in(file);
       std::string   line;
+      if (reading.size() > 1 && std::getline(in, line) &&
+          line.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
+        throw InputError("parameter file '" + file.string() +
+                         "', included by '" +
+                         reading[reading.size() - 2].string() +
+                         "', starts with a UTF-8 byte-order mark, which "
+                         "included files may not have: save it without one "
+                         "(in most editors the encoding 'UTF-8', not 'UTF-8 "
+                         "with BOM')");
+      in.clear();
+      in.seekg(0);
       while (std::getline(in, line))
         {
           const std::size_t start = line.find_first_not_of(" \t");
@@ -400,7 +417,7 @@ namespace unilateral
           if (!std::filesystem::exists(included))
             included = file.parent_path() / name;
           if (std::filesystem::is_regular_file(included))
-            refuse_include_cycles(included, reading);
+            check_included_files(included, reading);
         }
       reading.pop_back();
     }
@@ -415,10 +432,9 @@ namespace unilateral
     parse_parameter_file(dealii::ParameterHandler &prm,
                          const std::string        &parameter_file)
     {
-      const std::string byte_order_mark = "\xEF\xBB\xBF";
-      std::ifstream     in(parameter_file, std::ios::binary);
-      std::string       start(byte_order_mark.size(), '\0');
-      const bool        marked =
+      std::ifstream in(parameter_file, std::ios::binary);
+      std::string   start(byte_order_mark.size(), '\0');
+      const bool    marked =
         in.read(start.data(), static_cast<std::streamsize>(start.size())) &&
         start == byte_order_mark;
       const std::string extension =
@@ -452,7 +468,7 @@ namespace unilateral
                          "': not a file");
       {
         std::vector<std::filesystem::path> reading;
-        refuse_include_cycles(parameter_file, reading);
+        check_included_files(parameter_file, reading);
       }
       RunContext               context;
       dealii::ParameterHandler prm;

@@ -111,6 +111,14 @@ main()
                run({"cycle_a.prm"}),
                {"cycle_b.prm", "cycle_a.prm", "include cycle"},
                false);
+  // An included file saved with a UTF-8 byte-order mark: deal.II's parser
+  // refused its first line as unparsable, a line that looks well-formed.
+  write("includes_marked.prm", "set Scene = masonry\ninclude marked.prm\n");
+  write("marked.prm", "\xEF\xBB\xBFset Scene = masonry\n");
+  expect_error("an included file with a byte-order mark",
+               run({"includes_marked.prm"}),
+               {"marked.prm", "byte-order mark", "without one"},
+               false); // (the line quotes the folder the test runs in)
 
   expect_success("--help", run({"--help"}));
   expect_success("--print-parameters", run({"--print-parameters"}));

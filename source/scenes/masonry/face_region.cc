@@ -18,35 +18,51 @@ namespace unilateral::masonry
     // Halvings of a piece in s while the area inside it is not converged.
     constexpr unsigned int max_halvings = 24;
 
-    // The parts of [0, length] where inside(s) holds: the samples give the
-    // changes, bisection their places.
+    // Where value(x) changes on [0, length]: n + 1 samples find the
+    // changes, bisection places each to 2^-52 of the length.
+    template <typename Value>
+    std::vector<double>
+    changes(const double                              length,
+            const unsigned int                        n,
+            const std::function<Value(const double)> &value)
+    {
+      std::vector<double> found;
+      Value               before = value(0);
+      for (unsigned int k = 1; k <= n; ++k)
+        {
+          double      low  = length * (k - 1) / n;
+          double      high = length * k / n;
+          const Value now  = value(high);
+          if (now == before)
+            continue;
+          for (unsigned int b = 0; b < bisections; ++b)
+            {
+              const double middle                    = 0.5 * (low + high);
+              (value(middle) == before ? low : high) = middle;
+            }
+          found.push_back(0.5 * (low + high));
+          before = now;
+        }
+      return found;
+    }
+
+    // The parts of [0, length] where inside(s) holds.
     std::vector<std::pair<double, double>>
     inside_intervals(const double                             length,
                      const std::function<bool(const double)> &inside)
     {
       std::vector<std::pair<double, double>> parts;
-      bool                                   before = inside(0);
-      double                                 start  = 0;
-      for (unsigned int k = 1; k <= line_samples; ++k)
+      bool                                   in    = inside(0);
+      double                                 start = 0;
+      for (const double edge : changes<bool>(length, line_samples, inside))
         {
-          double     low  = length * (k - 1) / line_samples;
-          double     high = length * k / line_samples;
-          const bool now  = inside(high);
-          if (now == before)
-            continue;
-          for (unsigned int b = 0; b < bisections; ++b)
-            {
-              const double middle                     = 0.5 * (low + high);
-              (inside(middle) == before ? low : high) = middle;
-            }
-          const double edge = 0.5 * (low + high);
-          if (before)
+          if (in)
             parts.emplace_back(start, edge);
           else
             start = edge;
-          before = now;
+          in = !in;
         }
-      if (before)
+      if (in)
         parts.emplace_back(start, length);
       return parts;
     }
@@ -178,23 +194,11 @@ namespace unilateral::masonry
              double(!parts.empty() && parts.front().first == 0),
              double(!parts.empty() && parts.back().second == line_length(s))}};
         };
+        using Kind = std::array<double, 3>;
         std::vector<double> cuts{0};
-        auto                previous = kind(0);
-        for (unsigned int k = 1; k <= samples; ++k)
-          {
-            double     low     = double(k - 1) / samples;
-            double     high    = double(k) / samples;
-            const auto current = kind(high);
-            if (current == previous)
-              continue;
-            for (unsigned int b = 0; b < bisections; ++b)
-              {
-                const double middle                     = 0.5 * (low + high);
-                (kind(middle) == previous ? low : high) = middle;
-              }
-            cuts.push_back(0.5 * (low + high));
-            previous = current;
-          }
+        for (const double cut :
+             changes<Kind>(1.0, samples, std::function<Kind(double)>(kind)))
+          cuts.push_back(cut);
         cuts.push_back(1);
         // On each piece, Gauss points in s, halving a piece while its area
         // inside differs from its halves' (a curved edge's chord behaves
