@@ -29,15 +29,35 @@ namespace unilateral::lcp
       return in;
     }
 
+    // Files are written under a temporary name and renamed when complete
+    // (finish_writing): a run ended half-way (another MPI rank's failure,
+    // a kill) leaves no truncated file that reads like a whole one.
+    std::string
+    partial_name(const std::string &file_name)
+    {
+      return file_name + ".partial";
+    }
+
     std::ofstream
     open_for_writing(const std::string &file_name)
     {
-      std::ofstream out(file_name);
+      std::ofstream out(partial_name(file_name));
       if (!out)
         throw InputError("cannot write '" + file_name +
                          "': check that the directory exists and is writable");
       out << std::setprecision(17);
       return out;
+    }
+
+    void
+    finish_writing(std::ofstream &out, const std::string &file_name)
+    {
+      close_written_file(out, file_name);
+      std::error_code error;
+      std::filesystem::rename(partial_name(file_name), file_name, error);
+      if (error)
+        throw InputError("cannot write '" + file_name +
+                         "': " + error.message());
     }
 
     [[noreturn]] void
@@ -210,7 +230,7 @@ namespace unilateral::lcp
       for (SparseMatrix::InnerIterator it(A, j); it; ++it)
         if (it.row() >= j)
           out << it.row() + 1 << " " << j + 1 << " " << it.value() << "\n";
-    close_written_file(out, file_name);
+    finish_writing(out, file_name);
   }
 
   Vector
@@ -255,7 +275,7 @@ namespace unilateral::lcp
     std::ofstream out = open_for_writing(file_name);
     for (Index i = 0; i < v.size(); ++i)
       out << v[i] << "\n";
-    close_written_file(out, file_name);
+    finish_writing(out, file_name);
   }
 
   void
@@ -320,6 +340,7 @@ namespace unilateral::lcp
     for (Index k = 0; k < problem.n_constrained(); ++k)
       out << problem.constrained[k] + 1 << " " << problem.lower_bound[k]
           << "\n";
+    finish_writing(out, file_name);
   }
 
   Problem

@@ -6,8 +6,11 @@
 //
 // Part 1: face_region_rule's area of the part of one face inside a region,
 // against the exact area: straight edges (exact to rounding, also on a
-// distorted 2D cell and a sheared 3D cell) and a circle in 3D (to 1e-10:
-// a curved edge is followed by halving the pieces in s).
+// distorted 2D cell and a sheared 3D cell, tetrahedron faces); a disc and
+// a triangle with a corner inside the face in 3D, whose parts narrower
+// than the lines' sampling escape it (to 1e-4 and 1e-3 of their areas,
+// 1e-6 and 6e-5 of the face's; the face's Gauss points were 1e-2 off and
+// more).
 // Part 2: the load a wall's summary reports (statics.load) against weight
 // plus traction times the strip's length or area, in 2D and 3D.
 #include <unilateral/scenes/masonry/face_region.h>
@@ -195,14 +198,23 @@ main()
     0.35,
     1e-13);
   check<3>(
-    "3D, a circle of radius sqrt(0.1)",
+    "3D, a disc of radius sqrt(0.1) centred at (0.4, 0.5)",
     cube,
     3,
     [](const P3 &p) {
-      return std::pow(p[0] - 0.5, 2) + std::pow(p[2] - 0.5, 2) < 0.1;
+      return std::pow(p[0] - 0.4, 2) + std::pow(p[2] - 0.5, 2) < 0.1;
     },
     dealii::numbers::PI * 0.1,
-    1e-10);
+    1e-4);
+  check<3>(
+    "3D, a triangle with its corner inside the face",
+    cube,
+    3,
+    [](const P3 &p) {
+      return p[2] > 0.5 && std::abs(p[0] - 0.51) < 0.5 * (p[2] - 0.5);
+    },
+    0.125,
+    1e-3);
 
   // Tetrahedron: face 0 is z = 0, face 3 the slanted x + y + z = 1.
   const std::vector<P3> tetrahedron{P3(0, 0, 0),

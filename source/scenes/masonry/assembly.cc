@@ -137,9 +137,6 @@ namespace unilateral::masonry
                        dealii::update_quadrature_points)
     , dofs_per_cell(discretisation.fe->n_dofs_per_cell())
     , component(dofs_per_cell)
-    , reuse_allowed(discretisation.fe->n_dofs_per_line() <= 1 &&
-                    (dim < 3 || discretisation.fe->n_dofs_per_quad(0) <= 1))
-    , body_rhs(dofs_per_cell)
     , matrix(dofs_per_cell * dofs_per_cell)
     , rhs(dofs_per_cell)
   {
@@ -155,78 +152,44 @@ namespace unilateral::masonry
   }
 
   template <int dim>
-  bool
-  CellSystem<dim>::repeats_previous(
-    const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-    const unsigned int material_class)
-  {
-    const unsigned int n_vertices = cell->n_vertices();
-    bool repeats = reuse_allowed && material_class == previous_class &&
-                   previous_shape.size() == n_vertices;
-    double size = 0;
-    for (unsigned int v = 1; v < n_vertices && repeats; ++v)
-      size = std::max(size, (cell->vertex(v) - cell->vertex(0)).norm());
-    for (unsigned int v = 1; v < n_vertices && repeats; ++v)
-      repeats =
-        ((cell->vertex(v) - cell->vertex(0)) - previous_shape[v]).norm() <=
-        1e-13 * size;
-    if (!repeats)
-      {
-        previous_shape.resize(n_vertices);
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          previous_shape[v] = cell->vertex(v) - cell->vertex(0);
-        previous_class = material_class;
-      }
-    return repeats;
-  }
-
-  template <int dim>
   void
   CellSystem<dim>::reinit(
     const typename dealii::DoFHandler<dim>::active_cell_iterator &cell)
   {
-    const unsigned int material_class =
-      loads.class_of_block[cell->material_id()];
-    if (!repeats_previous(cell, material_class))
-      {
-        fe_values.reinit(cell);
-        const MaterialClass         &material = loads.classes[material_class];
-        const double                 lambda   = material.lambda();
-        const double                 mu       = material.mu();
-        const dealii::Tensor<1, dim> body_force =
-          material.density * loads.supports->gravity;
+    fe_values.reinit(cell);
+    const MaterialClass &material =
+      loads.classes[loads.class_of_block[cell->material_id()]];
+    const double                 lambda = material.lambda();
+    const double                 mu     = material.mu();
+    const dealii::Tensor<1, dim> body_force =
+      material.density * loads.supports->gravity;
 
-        // Linear elasticity, as in step-8 (plane strain in 2D).
-        std::fill(matrix.begin(), matrix.end(), 0.0);
-        std::fill(body_rhs.begin(), body_rhs.end(), 0.0);
-        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-          {
-            const double JxW = fe_values.JxW(q);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const unsigned int            ci = component[i];
-                const dealii::Tensor<1, dim> &gi = fe_values.shape_grad(i, q);
-                for (unsigned int j = i; j < dofs_per_cell; ++j)
-                  {
-                    const unsigned int            cj = component[j];
-                    const dealii::Tensor<1, dim> &gj =
-                      fe_values.shape_grad(j, q);
-                    double value =
-                      gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
-                    if (ci == cj)
-                      value += (gi * gj) * mu;
-                    matrix[i * dofs_per_cell + j] += value * JxW;
-                  }
-                if (body_force[ci] != 0)
-                  body_rhs[i] +=
-                    fe_values.shape_value(i, q) * body_force[ci] * JxW;
-              }
-          }
+    // Linear elasticity, as in step-8 (plane strain in 2D).
+    std::fill(matrix.begin(), matrix.end(), 0.0);
+    std::fill(rhs.begin(), rhs.end(), 0.0);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const double JxW = fe_values.JxW(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = 0; j < i; ++j)
-            matrix[i * dofs_per_cell + j] = matrix[j * dofs_per_cell + i];
+          {
+            const unsigned int            ci = component[i];
+            const dealii::Tensor<1, dim> &gi = fe_values.shape_grad(i, q);
+            for (unsigned int j = i; j < dofs_per_cell; ++j)
+              {
+                const unsigned int            cj = component[j];
+                const dealii::Tensor<1, dim> &gj = fe_values.shape_grad(j, q);
+                double value = gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
+                if (ci == cj)
+                  value += (gi * gj) * mu;
+                matrix[i * dofs_per_cell + j] += value * JxW;
+              }
+            if (body_force[ci] != 0)
+              rhs[i] += fe_values.shape_value(i, q) * body_force[ci] * JxW;
+          }
       }
-    std::copy(body_rhs.begin(), body_rhs.end(), rhs.begin());
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        matrix[i * dofs_per_cell + j] = matrix[j * dofs_per_cell + i];
 
     if (traction_on.empty() || loads.supports->zero_traction)
       return;

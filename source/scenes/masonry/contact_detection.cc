@@ -1,5 +1,6 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/scenes/masonry/contact_detection.h>
+#include <unilateral/scenes/masonry/face_region.h>
 
 #include <deal.II/base/quadrature.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -435,62 +436,70 @@ namespace unilateral::masonry
             static_cast<unsigned int>(result.support_names.size());
           result.support_names.push_back(support.name);
         }
-    // Whether each support (tractions included) acts at some node.
+    // Whether each support acts at some node; a traction (which the
+    // assembly integrates over the faces' parts in its region) whether it
+    // loads some face.
     std::set<const Support<dim> *> acting;
     for (std::size_t f = 0; f < faces.size(); ++f)
       for (const Support<dim> *support :
            supports.on_boundary(faces[f].boundary))
-        for (const unsigned int node : faces[f].nodes)
+        if (support->kind == Kind::traction)
           {
-            const dealii::Point<dim> p(
-              as_tensor<dim>(result.node_position[node]));
-            if (!supports.acts_at(*support, p, faces[f].vertices))
-              continue;
-            acting.insert(support);
-            // A traction loads the face (the assembly integrates it); here
-            // it is only counted.
-            if (support->kind == Kind::traction)
-              continue;
-            const unsigned int   index = support_index.at(support);
-            NodeConditions<dim> &c     = conditions[node];
-            if (support->kind == Kind::held)
-              {
-                std::array<double, dim> value{};
-                if (support->prescribed)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    value[d] = supports.displacement->value(p, d);
-                if (c.held_support >= 0)
-                  {
-                    double difference = 0;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      difference =
-                        std::max(difference,
-                                 std::abs(value[d] - c.held_value[d]));
-                    if (difference > tolerance)
-                      throw InputError(
-                        result.describe_node(node) + " lies on '" +
-                        result.support_names[c.held_support] + "' and '" +
-                        support->name +
-                        "', which prescribe different displacements "
-                        "there; let the two boundaries meet in different "
-                        "blocks or prescribe the same displacement");
-                    continue;
-                  }
-                c.held_support = static_cast<int>(index);
-                c.held_value   = value;
-              }
-            else if (support->kind == Kind::normal_zero)
-              {
-                c.rollers.add(faces[f].normal, c.roller_support.size());
-                c.roller_support.push_back(index);
-              }
-            else
-              {
-                c.signorini.add(faces[f].normal, c.signorini_face.size());
-                c.signorini_support.push_back(index);
-                c.signorini_face.push_back(f);
-              }
+            if (support->region == nullptr ||
+                face_touches_region<dim>(
+                  faces[f].vertices, [support](const dealii::Point<dim> &x) {
+                    return support->region->value(x) > 0.5;
+                  }))
+              acting.insert(support);
           }
+        else
+          for (const unsigned int node : faces[f].nodes)
+            {
+              const dealii::Point<dim> p(
+                as_tensor<dim>(result.node_position[node]));
+              if (!supports.acts_at(*support, p, faces[f].vertices))
+                continue;
+              acting.insert(support);
+              const unsigned int   index = support_index.at(support);
+              NodeConditions<dim> &c     = conditions[node];
+              if (support->kind == Kind::held)
+                {
+                  std::array<double, dim> value{};
+                  if (support->prescribed)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      value[d] = supports.displacement->value(p, d);
+                  if (c.held_support >= 0)
+                    {
+                      double difference = 0;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        difference =
+                          std::max(difference,
+                                   std::abs(value[d] - c.held_value[d]));
+                      if (difference > tolerance)
+                        throw InputError(
+                          result.describe_node(node) + " lies on '" +
+                          result.support_names[c.held_support] + "' and '" +
+                          support->name +
+                          "', which prescribe different displacements "
+                          "there; let the two boundaries meet in different "
+                          "blocks or prescribe the same displacement");
+                      continue;
+                    }
+                  c.held_support = static_cast<int>(index);
+                  c.held_value   = value;
+                }
+              else if (support->kind == Kind::normal_zero)
+                {
+                  c.rollers.add(faces[f].normal, c.roller_support.size());
+                  c.roller_support.push_back(index);
+                }
+              else
+                {
+                  c.signorini.add(faces[f].normal, c.signorini_face.size());
+                  c.signorini_support.push_back(index);
+                  c.signorini_face.push_back(f);
+                }
+            }
 
     for (const Support<dim> &support : supports.list)
       if (support.region != nullptr && acting.count(&support) == 0)

@@ -1,3 +1,4 @@
+#include <unilateral/base/input_error.h>
 #include <unilateral/scenes/masonry/face_region.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -5,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <sstream>
 
 namespace unilateral::masonry
 {
@@ -17,6 +19,8 @@ namespace unilateral::masonry
     constexpr unsigned int bisections   = 52; // to 2^-52 of the face
     // Halvings of a piece in s while the area inside it is not converged.
     constexpr unsigned int max_halvings = 24;
+    // The most points a face's rule may have (face_region_rule).
+    constexpr std::size_t max_points = 100000;
 
     // Where value(x) changes on [0, length]: n + 1 samples find the
     // changes, bisection places each to 2^-52 of the length.
@@ -88,7 +92,84 @@ namespace unilateral::masonry
         length += b - a;
       return length;
     }
+
+    // A face by its corners (deal.II's vertex order of a face: a line, a
+    // lexicographic quadrilateral or a triangle) and a region: the real
+    // point of (s, t) is interpolated from the corners, bilinearly on a
+    // quadrilateral and linearly on a line or triangle, which is what the
+    // masonry scene's mappings (MappingQ(1), MappingFE of P1) do. The face
+    // is seen as lines of the last parameter: in 2D the face itself, in 3D
+    // the lines of constant s, of length 1 (or 1 - s on a triangle).
+    template <int dim>
+    struct FacePatch
+    {
+      const std::vector<dealii::Point<dim>>                 &corner;
+      const std::function<bool(const dealii::Point<dim> &)> &inside;
+
+      bool
+      triangle() const
+      {
+        return dim == 3 && corner.size() == 3;
+      }
+
+      bool
+      inside_at(const double s, const double t) const
+      {
+        dealii::Point<dim> x = corner[0] + s * (corner[1] - corner[0]);
+        if constexpr (dim == 3)
+          {
+            x += t * (corner[2] - corner[0]);
+            if (!triangle())
+              x += s * t * (corner[3] - corner[2] - corner[1] + corner[0]);
+          }
+        return inside(x);
+      }
+
+      double
+      line_length(const double s) const
+      {
+        return triangle() ? 1 - s : 1.0;
+      }
+
+      std::function<bool(double)>
+      line(const double s) const
+      {
+        if constexpr (dim == 2)
+          return [this](const double u) { return inside_at(u, 0); };
+        else
+          return [this, s](const double t) { return inside_at(s, t); };
+      }
+
+      // Whole, none or partial, from samples 1/16 of the face apart.
+      typename FaceRegionRule<dim>::Coverage
+      coverage() const
+      {
+        using Coverage   = typename FaceRegionRule<dim>::Coverage;
+        bool any_inside  = false;
+        bool any_outside = false;
+        for (unsigned int i = 0; i <= (dim == 3 ? samples : 0); ++i)
+          {
+            const double s = double(i) / samples;
+            for (const bool value :
+                 sample_pattern(line_length(s), line(s), samples))
+              (value ? any_inside : any_outside) = true;
+          }
+        return !any_inside  ? Coverage::none :
+               !any_outside ? Coverage::whole :
+                              Coverage::partial;
+      }
+    };
   } // namespace
+
+  template <int dim>
+  bool
+  face_touches_region(
+    const std::vector<dealii::Point<dim>>                 &corners,
+    const std::function<bool(const dealii::Point<dim> &)> &inside)
+  {
+    return FacePatch<dim>{corners, inside}.coverage() !=
+           FaceRegionRule<dim>::Coverage::none;
+  }
 
   template <int dim>
   FaceRegionRule<dim>
@@ -112,54 +193,23 @@ namespace unilateral::masonry
     const dealii::Point<dim> origin = vertex(0);
     for (unsigned int d = 1; d < dim; ++d)
       rule.tangents.push_back(vertex(d) - origin);
-    const bool triangle = face_reference == dealii::ReferenceCells::Triangle;
     const auto reference_point = [&](const double s, const double t) {
       dealii::Point<dim> p = origin + s * rule.tangents[0];
       if constexpr (dim == 3)
         p += t * rule.tangents[1];
       return p;
     };
-    // The real point of (s, t): the masonry scene's mappings (MappingQ(1),
-    // MappingFE of P1) map a face by its vertices alone, bilinearly on a
-    // quadrilateral and linearly on a line or triangle.
     std::vector<dealii::Point<dim>> corner;
     for (unsigned int v = 0; v < face_reference.n_vertices(); ++v)
       corner.push_back(
         cell->vertex(reference.face_to_cell_vertices(face, v, 1)));
-    const auto inside_at = [&](const double s, const double t) {
-      dealii::Point<dim> x = corner[0] + s * (corner[1] - corner[0]);
-      if constexpr (dim == 3)
-        {
-          x += t * (corner[2] - corner[0]);
-          if (!triangle)
-            x += s * t * (corner[3] - corner[2] - corner[1] + corner[0]);
-        }
-      return inside(x);
+    const FacePatch<dim> patch{corner, inside};
+    const auto           line_length = [&](const double s) {
+      return patch.line_length(s);
     };
-    // The face as lines of the last parameter: in 2D the face itself, in
-    // 3D the lines of constant s, of length 1 (or 1 - s on a triangle).
-    const auto line_length = [&](const double s) {
-      return (dim == 3 && triangle) ? 1 - s : 1.0;
-    };
-    const auto line = [&](const double s) -> std::function<bool(double)> {
-      if constexpr (dim == 2)
-        return [&inside_at](const double u) { return inside_at(u, 0); };
-      else
-        return [&inside_at, s](const double t) { return inside_at(s, t); };
-    };
+    const auto line = [&](const double s) { return patch.line(s); };
 
-    // Whole, none or partial, from the samples.
-    bool any_inside = false, any_outside = false;
-    for (unsigned int i = 0; i <= (dim == 3 ? samples : 0); ++i)
-      {
-        const double s = double(i) / samples;
-        for (const bool value :
-             sample_pattern(line_length(s), line(s), samples))
-          (value ? any_inside : any_outside) = true;
-      }
-    rule.coverage = !any_inside  ? Rule::Coverage::none :
-                    !any_outside ? Rule::Coverage::whole :
-                                   Rule::Coverage::partial;
+    rule.coverage = patch.coverage();
     if (rule.coverage != Rule::Coverage::partial)
       return rule;
 
@@ -169,6 +219,23 @@ namespace unilateral::masonry
       [&](const double                                  s,
           const double                                  w_s,
           const std::vector<std::pair<double, double>> &parts) {
+        // A region whose edge winds through the face more than sampling
+        // can follow (sin(300 x z) > 0): refused rather than let the rule
+        // grow without bound.
+        if (rule.points.size() > max_points)
+          {
+            dealii::Point<dim> centre;
+            for (const auto &c : corner)
+              centre += c / static_cast<double>(corner.size());
+            std::ostringstream where;
+            where << centre;
+            throw InputError(
+              "the region of a traction crosses the face centred at (" +
+              where.str() + ") so often that more than " +
+              std::to_string(max_points) +
+              " points would integrate it: give a region with fewer "
+              "crossings per cell, or smaller cells");
+          }
         for (const auto &[a, b] : parts)
           for (unsigned int q = 0; q < gauss.size(); ++q)
             {
@@ -196,8 +263,8 @@ namespace unilateral::masonry
         };
         using Kind = std::array<double, 3>;
         std::vector<double> cuts{0};
-        for (const double cut :
-             changes<Kind>(1.0, samples, std::function<Kind(double)>(kind)))
+        for (const double cut : changes<Kind>(
+               1.0, line_samples, std::function<Kind(double)>(kind)))
           cuts.push_back(cut);
         cuts.push_back(1);
         // On each piece, Gauss points in s, halving a piece while its area
@@ -245,6 +312,12 @@ namespace unilateral::masonry
     return rule;
   }
 
+  template bool
+  face_touches_region(const std::vector<dealii::Point<2>> &,
+                      const std::function<bool(const dealii::Point<2> &)> &);
+  template bool
+  face_touches_region(const std::vector<dealii::Point<3>> &,
+                      const std::function<bool(const dealii::Point<3> &)> &);
   template FaceRegionRule<2>
   face_region_rule(const dealii::DoFHandler<2>::active_cell_iterator &,
                    unsigned int,

@@ -320,9 +320,11 @@ namespace unilateral::masonry
                       dealii::Patterns::Anything(),
                       "Boundaries loaded by 'Traction'. Boundaries not named "
                       "anywhere are traction free. A traction restricted to "
-                      "a region loads exactly the part of each face inside "
-                      "it (a region narrower than a sixteenth of a face, "
-                      "inside the face, is missed)." +
+                      "a region loads the part of each face inside it: "
+                      "exactly where the region's edges cross a face "
+                      "straight, to about 1e-4 of the face's load where a "
+                      "corner of the region or a curved edge lies inside "
+                      "it; parts narrower than 1/16 of a face are missed." +
                         where);
     prm.declare_entry("Traction",
                       "0; 0",

@@ -29,16 +29,6 @@ namespace unilateral::masonry
    * traction) of one cell in its physical DOFs, deal.II's local numbering:
    * what the LCP's assembly expands into the new variables, and what the
    * reactions and the tearing into blocks sum.
-   *
-   * A cell that is a translation of the previous one, of the same material,
-   * keeps the previous stiffness and body load (walls are mostly copies of
-   * one block). deal.II's own CellSimilarity is not used for this: it takes
-   * cells whose vertices differ by 1e-12 of the distance between the two
-   * cells for translations, which for distant cells is far more than
-   * rounding; ours allows 1e-13 of the cell's size. The test is sound
-   * because both mappings (MappingQ(1), MappingFE of P1) are fixed by the
-   * vertices and the elements have at most one DoF on each line and face,
-   * so no orientation enters the local numbering.
    */
   template <int dim>
   class CellSystem
@@ -52,13 +42,6 @@ namespace unilateral::masonry
     reinit(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
 
   private:
-    /// Whether @p cell is the previous cell translated, of the same
-    /// material class (and remember it for the next call).
-    bool
-    repeats_previous(
-      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-      unsigned int material_class);
-
     /// Adds the traction on the part of a face inside its region.
     void
     add_partial_face_load(
@@ -73,13 +56,6 @@ namespace unilateral::masonry
     std::vector<unsigned int>  component;
     /// The traction supports, by boundary id.
     std::vector<std::vector<const Support<dim> *>> traction_on;
-    /// Whether the element allows reuse between translated cells (above).
-    bool reuse_allowed;
-    /// The previous cell's vertices less its first, its material class, and
-    /// its body load (rhs without traction).
-    std::vector<dealii::Tensor<1, dim>> previous_shape;
-    unsigned int        previous_class = dealii::numbers::invalid_unsigned_int;
-    std::vector<double> body_rhs;
 
   public:
     /// Row-major, dofs_per_cell^2.
