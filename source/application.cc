@@ -110,8 +110,9 @@ namespace unilateral
         dealii::Patterns::Double(0),
         "Most memory the run may use, in GB; 0: the machine's available "
         "memory. Under MPI it bounds each rank, against the memory its "
-        "machine has left (ranks on one machine share it). Before building the matrix, ordering it and allocating a "
-        "Cholesky factor, the run checks that these fit, and stops with a "
+        "machine has left (ranks on one machine share it). Before building "
+        "the matrix, ordering it and allocating a Cholesky factor, the run "
+        "checks that these fit, and stops with a "
         "message naming the parameters that make the problem smaller (and "
         "this one first where it, not the machine, is the bound) instead of "
         "being killed by the kernel half-way (exit code 1).");
