@@ -344,10 +344,11 @@ namespace unilateral::lcp
     // plate's deflections and slopes on elements of 1e-4 mm), a residual
     // relative to the largest force let the others be wrong.
     const double mean_diagonal = diagonal_scale(problem.A);
+    const Vector diagonal      = problem.A.diagonal();
     Vector       root_stiffness(n);
     for (Index i = 0; i < n; ++i)
-      root_stiffness[i] = std::sqrt(
-        problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : mean_diagonal);
+      root_stiffness[i] =
+        std::sqrt(diagonal[i] > 0 ? diagonal[i] : mean_diagonal);
 
     // |A| |u|: the size of the terms that cancel in A u.
     Vector abs_product = Vector::Zero(n);

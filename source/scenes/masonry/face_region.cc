@@ -204,10 +204,6 @@ namespace unilateral::masonry
       corner.push_back(
         cell->vertex(reference.face_to_cell_vertices(face, v, 1)));
     const FacePatch<dim> patch{corner, inside};
-    const auto           line_length = [&](const double s) {
-      return patch.line_length(s);
-    };
-    const auto line = [&](const double s) { return patch.line(s); };
 
     rule.coverage = patch.coverage();
     if (rule.coverage != Rule::Coverage::partial)
@@ -247,7 +243,7 @@ namespace unilateral::masonry
       };
 
     if constexpr (dim == 2)
-      add_line(0, 1, inside_intervals(1.0, line(0)));
+      add_line(0, 1, inside_intervals(1.0, patch.line(0)));
     else
       {
         // Cut [0, 1] in s where the line's parts change in kind: their
@@ -255,11 +251,13 @@ namespace unilateral::masonry
         // edge crosses a face edge or turns back). Between such cuts the
         // parts inside move smoothly with s.
         const auto kind = [&](const double s) {
-          const auto parts = inside_intervals(line_length(s), line(s));
+          const auto parts =
+            inside_intervals(patch.line_length(s), patch.line(s));
           return std::array<double, 3>{
             {double(parts.size()),
              double(!parts.empty() && parts.front().first == 0),
-             double(!parts.empty() && parts.back().second == line_length(s))}};
+             double(!parts.empty() &&
+                    parts.back().second == patch.line_length(s))}};
         };
         using Kind = std::array<double, 3>;
         std::vector<double> cuts{0};
@@ -281,7 +279,8 @@ namespace unilateral::masonry
           for (unsigned int q = 0; q < gauss.size(); ++q)
             {
               const double s = a + (b - a) * gauss.point(q)[0];
-              piece.lines.push_back(inside_intervals(line_length(s), line(s)));
+              piece.lines.push_back(
+                inside_intervals(patch.line_length(s), patch.line(s)));
               piece.area +=
                 (b - a) * gauss.weight(q) * total_length(piece.lines.back());
             }

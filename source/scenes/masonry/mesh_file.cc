@@ -69,9 +69,8 @@ namespace unilateral::masonry
     int
     cell_vertices(const int type, const int dim, const std::string &file)
     {
-      const auto &linear = linear_elements;
-      const auto  found  = linear.find(type);
-      if (found == linear.end())
+      const auto found = linear_elements.find(type);
+      if (found == linear_elements.end())
         fail(file,
              "element type " + std::to_string(type) +
                " is not a linear cell; mesh with first-order elements "
@@ -145,9 +144,9 @@ namespace unilateral::masonry
         std::vector<long> nodes;
       };
       std::vector<Element> elements;
-      // The boundary elements (curves in 2D, surfaces in 3D) by their
-      // sorted nodes: one listed twice is refused.
-      std::map<std::vector<long>, long> boundary_elements;
+      // The cells and the boundary elements (curves in 2D, surfaces in 3D)
+      // by their sorted nodes: one listed twice is refused.
+      std::map<std::vector<long>, long> cell_elements, boundary_elements;
       auto                              read_or_fail = [&](auto &value) {
         if (!(in >> value))
           fail(file, "unexpected end or bad number in section " + section);
@@ -303,26 +302,43 @@ namespace unilateral::masonry
                 element.nodes.resize(linear_elements.at(type).second);
                 for (long &node : element.nodes)
                   read_or_fail(node);
-                if (n > 0)
-                  elements.push_back(std::move(element));
-                else if (linear_elements.at(type).first == dim - 1)
+                const bool cell = n > 0;
+                if (cell || linear_elements.at(type).first == dim - 1)
                   {
+                    // A cell listed twice would count its weight and
+                    // stiffness twice (and GridIn, given it with another
+                    // vertex order, never returns).
                     std::vector<long> key = element.nodes;
                     std::sort(key.begin(), key.end());
+                    if (cell &&
+                        std::adjacent_find(key.begin(), key.end()) != key.end())
+                      fail(file,
+                           "element " + std::to_string(tag) +
+                             " names one node twice (a collapsed cell): "
+                             "remesh it");
                     const auto [first, added] =
-                      boundary_elements.emplace(key, tag);
+                      (cell ? cell_elements : boundary_elements)
+                        .emplace(key, tag);
                     if (!added)
                       fail(file,
                            "elements " + std::to_string(first->second) +
-                             " and " + std::to_string(tag) +
-                             " are one boundary " +
-                             (dim == 2 ? "segment" : "face") +
-                             " (the same nodes), listed twice; gmsh's format "
-                             "2.2 lists a " +
-                             (dim == 2 ? "curve" : "surface") +
-                             "'s elements once for each physical group it "
-                             "belongs to: put each into one physical group");
+                             " and " + std::to_string(tag) + " are one " +
+                             (cell     ? "cell" :
+                              dim == 2 ? "boundary segment" :
+                                         "boundary face") +
+                             " (the same nodes), listed twice" +
+                             (cell ? ": its weight and stiffness would count "
+                                     "twice" :
+                                     "") +
+                             "; gmsh's format 2.2 lists a " +
+                             (cell ? (dim == 2 ? "surface" : "volume") :
+                                     (dim == 2 ? "curve" : "surface")) +
+                             "'s " + (cell ? "cells" : "elements") +
+                             " once for each physical group it belongs to: "
+                             "put each into one physical group");
                   }
+                if (cell)
+                  elements.push_back(std::move(element));
               };
               if (version == 2.2)
                 {
@@ -388,28 +404,8 @@ namespace unilateral::masonry
                "in 3D): check 'Masonry/Dimension' and the file");
       scan.simplex = elements.front().type == 2 || elements.front().type == 4;
       scan.smallest_edge = std::numeric_limits<double>::max();
-      std::map<std::vector<long>, long> cell_of_nodes;
       for (const Element &element : elements)
         {
-          // A cell listed twice would count its weight and stiffness twice
-          // (and GridIn, given it with another vertex order, never returns).
-          std::vector<long> key = element.nodes;
-          std::sort(key.begin(), key.end());
-          if (std::adjacent_find(key.begin(), key.end()) != key.end())
-            fail(file,
-                 "element " + std::to_string(element.tag) +
-                   " names one node twice (a collapsed cell): remesh it");
-          const auto [first, added] = cell_of_nodes.emplace(key, element.tag);
-          if (!added)
-            fail(file,
-                 "elements " + std::to_string(first->second) + " and " +
-                   std::to_string(element.tag) +
-                   " are one cell (the same nodes), listed twice: its weight "
-                   "and stiffness would count twice; gmsh's format 2.2 lists "
-                   "a " +
-                   (dim == 2 ? "surface" : "volume") +
-                   "'s cells once for each physical group it belongs to: put "
-                   "each into one physical group");
           if ((element.type == 2 || element.type == 4) != scan.simplex)
             fail(file,
                  "mixes simplices and hypercubes: mesh every block with "
