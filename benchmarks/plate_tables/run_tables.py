@@ -339,6 +339,11 @@ def convergence(arguments, results):
                       boundary)
             s = run(arguments.executable, prm,
                     os.path.join(runs, name, "summary.json"))
+            # A deflection the program itself does not vouch for (exit 2)
+            # is no point of a convergence study.
+            if s["exit_code"] != 0:
+                sys.exit(f"{name}: exit code {s['exit_code']}, the run did "
+                         f"not pass its answer checks")
             series = -SERIES_COEFFICIENT * 1e8 / s["flexural_rigidity"]
             error = abs(s["centre_deflection"] / series - 1)
             lines.append({"boundary": boundary, "n": n,

@@ -27,6 +27,7 @@ namespace unilateral::lcp
     floating_bodies    = other.floating_bodies;
     mostly_active      = other.mostly_active;
     known_semidefinite = other.known_semidefinite;
+    definite           = other.definite;
     tearing            = std::move(other.tearing);
     hierarchy          = std::move(other.hierarchy);
     return *this;

@@ -237,6 +237,94 @@ main()
                "5 9.3 0 0\n6 10.3 0 0\n7 10.3 0.2 0\n8 9.3 0.2 0\n$EndNodes\n"
                "$Elements\n4\n1 3 2 1 1 1 2 3 4\n2 3 2 1 2 5 6 7 8\n"
                "3 1 2 7 11 1 2\n4 1 2 7 12 5 6\n$EndElements\n");
+  // Found by a review (2026-11-27): a node tag listed twice, the last
+  // position taken silently (a block's corner moved, exit 0).
+  bad("a node defined twice",
+      header + "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n4 0 2 0\n"
+               "$EndNodes\n$Elements\n1\n1 3 2 1 1 1 2 3 4\n$EndElements\n");
+  // Found by the same review: the second square's left side tilted by
+  // 1e-7 (its top corner at x = 1 + 1e-7) made no joint with the first
+  // square's right side, and said nothing: joints were sought only between
+  // faces whose normals agree to 1e-9, so the squares stood side by side
+  // unjoined (exit 0; with the joint they press on each other, bulging
+  // under their weight). Refused now; with 'Coincidence tolerance' raised
+  // as the message says, the joint is made and the energy is the untilted
+  // squares' (the tilt moves the joint by at most 1e-7).
+  {
+    std::string tilted = two_squares(1);
+    tilted.replace(tilted.find("8 1.000000 1 0"), 14, "8 1.0000001 1 0");
+    bad("a joint's faces tilted by 1e-7", tilted);
+    const auto energy = [](const std::string &mesh, const std::string &lines) {
+      write("joint.msh", mesh);
+      write("joint.prm",
+            "set Scene = masonry\nsubsection Output\n"
+            "  set Directory = results\n  set Write VTU = false\n"
+            "  set Progress = false\nend\nsubsection Masonry\n"
+            "  set Geometry = mesh file\n  set Mesh file = joint.msh\n" +
+              lines +
+              "  subsection Boundary conditions\n"
+              "    set Normal displacement zero =\n    set Signorini =\n"
+              "    set Traction boundaries =\n    set Fixed = base\n"
+              "  end\nend\n");
+      const Result      result = run({"joint.prm"});
+      const std::size_t at     = result.out.find("  energy ");
+      return std::pair<int, double>(result.code,
+                                    at == std::string::npos ?
+                                      0.0 :
+                                      std::stod(result.out.substr(at + 9)));
+    };
+    const auto straight = energy(two_squares(1), "");
+    const auto joined =
+      energy(tilted, "  set Coincidence tolerance = 1.5e-7\n");
+    const auto apart = energy(two_squares(1.5), "");
+    std::cout << "the same with 'Coincidence tolerance' = 1.5e-7: exit code "
+              << joined.first << ", energy the untilted squares' to 1e-6: "
+              << yes_no(std::abs(joined.second - straight.second) <=
+                        1e-6 * std::abs(straight.second))
+              << ", and not that of squares apart: "
+              << yes_no(std::abs(apart.second - straight.second) >
+                        1e-3 * std::abs(straight.second))
+              << "\n";
+  }
+  // Found by the same review: the boundary 'base' also on the lower side
+  // of the upper of two stacked squares (nodes of their own): a Signorini
+  // support there set the upper square on a rigid support inside the lower
+  // one (exit 0).
+  bad("a Signorini support on a joint",
+      header + "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
+               "$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 1 0\n"
+               "6 1 1 0\n7 1 2 0\n8 0 2 0\n$EndNodes\n$Elements\n4\n"
+               "1 3 2 1 1 1 2 3 4\n2 3 2 1 2 5 6 7 8\n3 1 2 7 11 1 2\n"
+               "4 1 2 7 12 5 6\n$EndElements\n",
+      "  subsection Boundary conditions\n    set Fixed = base where y < 0.5\n"
+      "    set Signorini = base where y > 0.5\n  end\n");
+  // Found by the same review: a Signorini gap that is zero on the support,
+  // evaluated at rounded node positions, came out -7e-19 and was refused
+  // as "-0.000000 < 0". Below zero by less than the coincidence tolerance
+  // it is zero; a real one is printed in full.
+  {
+    const std::string lines =
+      "  subsection Boundary conditions\n    set Fixed = base where x < 0.25\n"
+      "    set Signorini = base where x > 0.25\n";
+    write("bad.msh", square_at("0", "1"));
+    bad("a negative Signorini gap",
+        "",
+        lines + "    set Signorini gap = -0.001\n  end\n");
+    write("bad.msh", square_at("0", "1"));
+    write("gap.prm",
+          "set Scene = masonry\nsubsection Output\n"
+          "  set Directory = results\n  set Write VTU = false\n"
+          "  set Progress = false\nend\nsubsection Masonry\n"
+          "  set Geometry = mesh file\n  set Mesh file = bad.msh\n" +
+            lines +
+            "    set Normal displacement zero =\n"
+            "    set Traction boundaries =\n"
+            "    set Signorini gap = -1e-20\n  end\nend\n");
+    const Result result = run({"gap.prm"});
+    std::cout << "a Signorini gap of -1e-20 (zero rounded): exit code "
+              << result.code << ", stderr empty: " << yes_no(result.err.empty())
+              << "\n";
+  }
   bad("a cell with no area",
       header + "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 3 0 0\n$EndNodes\n"
                "$Elements\n1\n1 3 2 1 1 1 2 3 4\n$EndElements\n");

@@ -67,12 +67,14 @@ namespace unilateral::lcp
    * The forces of the answer balance the loads, measured against the loads:
    * with F = max(|b|_inf, |lambda_S|_inf), the residuals of stationarity,
    * of dual feasibility, and in force units (times A_ii) of
-   * complementarity, must be at most @p kkt_tolerance F (a large motion
-   * elsewhere hides a force on an open contact from the relative KKT
-   * residual); and double
-   * precision must resolve the forces that finely: the rounding error of
-   * A u, epsilon |A| |u|_inf, must be at most @p kkt_tolerance F too (it
-   * bounds the accuracy of the contact forces and of the energy). Both
+   * complementarity, must be at most @p kkt_tolerance F plus ten times
+   * their rounding error, epsilon |A| |u|_inf (a large motion elsewhere
+   * hides a force on an open contact from the relative KKT residual); and
+   * double precision must resolve the forces that finely: epsilon |A|
+   * |u|_inf must be at most @p kkt_tolerance F too (it bounds the accuracy
+   * of the contact forces and of the energy), unless A is definite
+   * (Problem::definite: no rigid motion, |A| |u| / F is the conditioning).
+   * Both
    * catch what the relative KKT residuals (measured against |A| |u|) miss
    * where the displacements are mostly rigid motions far larger than the
    * elastic ones: blocks that settle by a gap a billion times their elastic

@@ -66,7 +66,8 @@ namespace unilateral::lcp
 
     /**
      * @name What the builder knows of the problem
-     * Not data of the LCP: they only choose the solvers' automatic settings.
+     * Not data of the LCP: they only choose the solvers' automatic settings
+     * and what the answer checks may blame.
      */
     /// @{
     /// A is singular unless the constraints hold the bodies (blocks free to
@@ -80,6 +81,12 @@ namespace unilateral::lcp
     /// of one) or verified (verify_semidefinite): solve_lcp does not
     /// factorise it to verify that again.
     bool known_semidefinite = false;
+    /// A is positive definite by construction (every body held: the
+    /// clamped plate). No rigid motion can hide in |A| |u| then, and its
+    /// size against the loads measures the conditioning (h^-4 for the
+    /// plate) rather than a drift: the answer checks (answer_checks.h) do
+    /// not refuse an answer for it.
+    bool definite = false;
     /// The problem torn into floating subdomains (tearing.h), for the dual
     /// methods; null if the builder made none.
     std::shared_ptr<const Tearing> tearing;

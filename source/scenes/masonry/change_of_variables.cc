@@ -206,11 +206,26 @@ namespace unilateral::masonry
         {
           const dealii::Tensor<1, dim> r = residual(directions[k]);
           if (r.norm() < 1e-3)
-            throw InputError(
-              describe(node) +
-              " has contacts or supports in directions that are (nearly) "
-              "linearly dependent: node-to-node contact needs independent "
-              "directions at a node (merge the faces or refine the mesh)");
+            {
+              std::ostringstream message;
+              message << describe(node)
+                      << " has contacts or supports in directions that are "
+                         "(nearly) linearly dependent (one "
+                      << std::asin(std::min(1.0, r.norm()))
+                      << " rad from the others' span): node-to-node contact "
+                         "needs independent directions at a node (merge the "
+                         "faces or refine the mesh)";
+              // Directions this close are meant to be one: faces that
+              // should be parallel, from coordinates rounded in the file.
+              if (r.norm() < 1e-4)
+                message << "; faces meant to be parallel whose coordinates "
+                           "were rounded (a mesh written with few "
+                           "significant digits: write more) differ so "
+                           "little, and their joints are one direction if "
+                           "'Masonry/Coincidence tolerance' is at least "
+                        << 1.5 * r.norm() / 4;
+              throw InputError(message.str());
+            }
           orthonormal.push_back(r / r.norm());
           frame.rows[n_rows++] = directions[k];
         }
@@ -256,6 +271,41 @@ namespace unilateral::masonry
   } // namespace
 
   template <int dim>
+  DirectionClasses<dim>::DirectionClasses(const double tolerance)
+    : tolerance(tolerance)
+  {}
+
+  template <int dim>
+  int
+  DirectionClasses<dim>::find(const Direction<dim> &d) const
+  {
+    // Probe the neighbouring cells of the grid, so that directions within
+    // the tolerance meet whichever side of a cell edge they fall on.
+    std::array<long, dim> key;
+    for (unsigned int c = 0; c < dim; ++c)
+      key[c] = std::lround(d[c] / (10 * tolerance));
+    for (unsigned int probe = 0; probe < (dim == 2 ? 9u : 27u); ++probe)
+      {
+        std::array<long, dim> neighbour = key;
+        for (unsigned int c = 0, p = probe; c < dim; ++c, p /= 3)
+          neighbour[c] += static_cast<long>(p % 3) - 1;
+        const auto found = index.find(neighbour);
+        if (found == index.end())
+          continue;
+        for (const unsigned int k : found->second)
+          {
+            double difference = 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              difference =
+                std::max(difference, std::abs(directions[k][c] - d[c]));
+            if (difference <= tolerance)
+              return static_cast<int>(k);
+          }
+      }
+    return -1;
+  }
+
+  template <int dim>
   std::pair<unsigned int, double>
   DirectionClasses<dim>::classify(const Direction<dim> &normal)
   {
@@ -266,31 +316,22 @@ namespace unilateral::masonry
           sign = normal[c] > 0 ? 1.0 : -1.0;
           break;
         }
-    Direction<dim> d;
+    Direction<dim> d, opposite;
     for (unsigned int c = 0; c < dim; ++c)
-      d[c] = sign * normal[c];
-    // Probe the neighbouring cells of a grid of spacing 1e-8, so that
-    // directions within 1e-9 meet whichever side of a cell edge they fall
-    // on.
+      {
+        d[c]        = sign * normal[c];
+        opposite[c] = -d[c];
+      }
+    // Both orientations: a normal whose first components are about as
+    // small as 1e-8 may have got the other sign than its class's d.
+    if (const int k = find(d); k >= 0)
+      return {static_cast<unsigned int>(k), sign};
+    if (const int k = find(opposite); k >= 0)
+      return {static_cast<unsigned int>(k), -sign};
     std::array<long, dim> key;
     for (unsigned int c = 0; c < dim; ++c)
-      key[c] = std::lround(d[c] * 1e8);
-    for (unsigned int probe = 0; probe < (dim == 2 ? 9u : 27u); ++probe)
-      {
-        std::array<long, dim> neighbour = key;
-        for (unsigned int c = 0, p = probe; c < dim; ++c, p /= 3)
-          neighbour[c] += static_cast<long>(p % 3) - 1;
-        const auto found = index.find(neighbour);
-        if (found == index.end())
-          continue;
-        double difference = 0;
-        for (unsigned int c = 0; c < dim; ++c)
-          difference =
-            std::max(difference, std::abs(directions[found->second][c] - d[c]));
-        if (difference <= 1e-9)
-          return {found->second, sign};
-      }
-    index[key] = static_cast<unsigned int>(directions.size());
+      key[c] = std::lround(d[c] / (10 * tolerance));
+    index[key].push_back(static_cast<unsigned int>(directions.size()));
     directions.push_back(d);
     return {static_cast<unsigned int>(directions.size() - 1), sign};
   }

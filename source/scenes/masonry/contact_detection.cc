@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -288,6 +289,155 @@ namespace unilateral::masonry
       std::vector<unsigned int> roller_support, signorini_support;
       std::vector<std::size_t>  signorini_face;
     };
+
+    /**
+     * Refuses faces of two blocks that nearly coincide but are not
+     * parallel: each face's vertices within @p near of the other's plane,
+     * facing each other and overlapping by more than @p tolerance, their
+     * normals in different direction classes (further apart than
+     * @p direction_tolerance). Joints are sought only between faces of one
+     * class, so such faces (a face tilted by 1e-7, a mesh written with too
+     * few digits) would be left without a joint, and without a word.
+     * @p joined: the faces that have a joint; only pairs with a face
+     * without one are looked at.
+     */
+    template <int dim>
+    void
+    refuse_tilted_faces(const std::vector<FaceRecord<dim>> &faces,
+                        const std::vector<unsigned int>    &face_class,
+                        const std::vector<char>            &joined,
+                        const double                        near,
+                        const double                        tolerance,
+                        const double                        cell_size,
+                        const double                        direction_tolerance)
+    {
+      // The faces without a joint on a grid of cells as large as the
+      // largest face, each in every cell its box (grown by near) meets;
+      // then every face looks in the cells its own box meets.
+      double spacing = near;
+      for (const FaceRecord<dim> &face : faces)
+        spacing = std::max(spacing, face.diameter);
+      using Cell     = std::array<long, dim>;
+      const auto box = [&](const FaceRecord<dim> &face) {
+        std::array<Cell, 2> range;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            double lo = std::numeric_limits<double>::max(), hi = -lo;
+            for (const auto &v : face.vertices)
+              {
+                lo = std::min(lo, v[c]);
+                hi = std::max(hi, v[c]);
+              }
+            range[0][c] = std::lround(std::floor((lo - near) / spacing));
+            range[1][c] = std::lround(std::floor((hi + near) / spacing));
+          }
+        return range;
+      };
+      const auto for_each_cell = [](const std::array<Cell, 2> &range,
+                                    const auto                &action) {
+        Cell cell = range[0];
+        while (true)
+          {
+            action(cell);
+            unsigned int c = 0;
+            for (; c < dim; ++c)
+              {
+                if (++cell[c] <= range[1][c])
+                  break;
+                cell[c] = range[0][c];
+              }
+            if (c == dim)
+              return;
+          }
+      };
+      std::map<Cell, std::vector<std::size_t>> unjoined;
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        if (!joined[f])
+          for_each_cell(box(faces[f]),
+                        [&](const Cell &cell) { unjoined[cell].push_back(f); });
+      if (unjoined.empty())
+        return;
+
+      const auto centre = [](const FaceRecord<dim> &face) {
+        dealii::Point<dim> x;
+        for (const auto &v : face.vertices)
+          x += v / static_cast<double>(face.vertices.size());
+        return x;
+      };
+      // Every vertex of a within near of b's plane.
+      const auto near_plane = [&](const FaceRecord<dim> &a,
+                                  const FaceRecord<dim> &b) {
+        const dealii::Point<dim> x = centre(b);
+        for (const auto &v : a.vertices)
+          if (std::abs((v - x) * b.normal) > near)
+            return false;
+        return true;
+      };
+      // The overlap of the faces seen along p's normal: a length in 2D, an
+      // area over the larger diameter in 3D (as for joints).
+      const auto overlap = [&](const FaceRecord<dim> &p,
+                               const FaceRecord<dim> &q) {
+        const PlaneBasis<dim> basis(as_array<dim>(p.normal));
+        Polygon               a, b;
+        for (const auto &v : p.vertices)
+          a.push_back(basis(v));
+        for (const auto &v : q.vertices)
+          b.push_back(basis(v));
+        if constexpr (dim == 2)
+          return std::min(std::max(a[0][0], a[1][0]),
+                          std::max(b[0][0], b[1][0])) -
+                 std::max(std::min(a[0][0], a[1][0]),
+                          std::min(b[0][0], b[1][0]));
+        else
+          return overlap_area(convex_hull_order(a), convex_hull_order(b)) /
+                 std::max(p.diameter, q.diameter);
+      };
+
+      for (std::size_t p = 0; p < faces.size(); ++p)
+        for_each_cell(box(faces[p]), [&](const Cell &cell) {
+          const auto list = unjoined.find(cell);
+          if (list == unjoined.end())
+            return;
+          for (const std::size_t q : list->second)
+            {
+              const FaceRecord<dim> &a = faces[p], &b = faces[q];
+              if (a.block == b.block || face_class[p] == face_class[q] ||
+                  a.normal * b.normal >= 0 || !near_plane(a, b) ||
+                  !near_plane(b, a) || overlap(a, b) <= tolerance)
+                continue;
+              const double angle = std::acos(
+                std::max(-1.0, std::min(1.0, -(a.normal * b.normal))));
+              double distance = 0;
+              for (const auto &v : b.vertices)
+                distance =
+                  std::max(distance, std::abs((v - centre(a)) * a.normal));
+              // Joined if their normals share a class (4 tau) and their
+              // nodes coincide (tau of the smallest cell).
+              const double needed =
+                std::max(angle / 4, distance / cell_size) * 1.5;
+              std::ostringstream message;
+              message << "blocks " << a.block << " and " << b.block
+                      << " have faces that nearly coincide (near "
+                      << describe_point<dim>(
+                           as_array<dim>(dealii::Tensor<1, dim>(centre(a))),
+                           a.block)
+                      << ", at most " << distance
+                      << " apart) but are not parallel: their normals differ "
+                         "by "
+                      << angle << " rad, more than the " << direction_tolerance
+                      << " of a joint (4 times 'Masonry/Coincidence "
+                         "tolerance'), so no joint would be made between "
+                         "them; make the faces coincide (a mesh written with "
+                         "few significant digits: write more)";
+              if (needed <= 1e-3)
+                message << ", raise 'Masonry/Coincidence tolerance' to "
+                        << needed << " or more if they are meant to touch";
+              message << ", or move them further apart (more than " << near
+                      << ")";
+              throw InputError(message.str());
+            }
+        });
+    }
   } // namespace
 
   template <int dim>
@@ -545,19 +695,33 @@ namespace unilateral::masonry
               continue;
             const dealii::Point<dim> p(
               as_tensor<dim>(result.node_position[node]));
-            const double gap = supports.gap->value(p);
+            double gap = supports.gap->value(p);
             if (!std::isfinite(gap))
               throw InputError("parameter 'Masonry/Boundary conditions/"
                                "Signorini gap' is not finite at " +
                                result.describe_node(node));
             // As its help says: a support inside the block would push
-            // the wall off at the start, which no settlement means.
+            // the wall off at the start, which no settlement means. A gap
+            // below zero by less than the coincidence tolerance is zero
+            // rounded (an expression of coordinates that vanishes on the
+            // support, evaluated at rounded node positions).
+            if (gap < 0 && gap >= -tolerance)
+              gap = 0;
             if (gap < 0)
-              throw InputError(
-                "parameter 'Masonry/Boundary conditions/Signorini gap' is " +
-                std::to_string(gap) + " < 0 at " + result.describe_node(node) +
-                ": the support would lie inside the block; give a gap >= 0 "
-                "(0: the support touches the block)");
+              {
+                std::ostringstream message;
+                message << std::setprecision(12)
+                        << "parameter 'Masonry/Boundary conditions/Signorini "
+                           "gap' is "
+                        << gap << " < 0 at " << result.describe_node(node)
+                        << ": the support would lie inside the block; give a "
+                           "gap >= 0 (0: the support touches the block; "
+                           "above -"
+                        << tolerance
+                        << ", 'Coincidence tolerance' times the smallest "
+                           "cell, counts as 0)";
+                throw InputError(message.str());
+              }
             std::set<std::size_t> support_faces;
             for (const std::size_t item : group.items)
               support_faces.insert(c.signorini_face[item]);
@@ -601,7 +765,13 @@ namespace unilateral::masonry
 
     // Joints. Faces by direction class; within a class, faces with
     // outward +d (the lower block) against faces with -d.
-    DirectionClasses<dim> classes;
+    // Normals within 4 tau (tau = 'Coincidence tolerance') share a class:
+    // faces whose nodes coincide to tau of the smallest cell may be tilted
+    // by about 2 tau against each other (a mesh written with few digits).
+    const double direction_tolerance =
+      std::max(1e-9, 4 * tolerance / cell_size);
+    DirectionClasses<dim>     classes(direction_tolerance);
+    std::vector<unsigned int> face_class(faces.size());
     struct ClassFace
     {
       std::size_t face;
@@ -613,6 +783,7 @@ namespace unilateral::masonry
     for (std::size_t f = 0; f < faces.size(); ++f)
       {
         const auto [k, sign] = classes.classify(as_array<dim>(faces[f].normal));
+        face_class[f]        = k;
         if (k >= by_class.size())
           by_class.resize(k + 1);
         by_class[k].push_back({f, 0, 0, 0, sign > 0});
@@ -773,6 +944,48 @@ namespace unilateral::masonry
               }
           }
       }
+
+    {
+      std::vector<char> joined(faces.size(), 0);
+      for (const auto &[pair, record] : joint_pairs)
+        joined[record.face_first] = joined[record.face_second] = 1;
+      refuse_tilted_faces<dim>(faces,
+                               face_class,
+                               joined,
+                               near,
+                               tolerance,
+                               cell_size,
+                               direction_tolerance);
+      // A Signorini support named on a face that is a joint (the blocks'
+      // faces coincide, with nodes of their own: a mesh file's boundary
+      // group that also covers a joint) would set the block on a rigid
+      // support where the other block is. (Rollers and held nodes on
+      // joints are two-sided and meant: the symmetry plane of an extruded
+      // wall.)
+      for (const auto &[pair, record] : joint_pairs)
+        for (const std::size_t f : {record.face_first, record.face_second})
+          for (const Support<dim> *support :
+               supports.on_boundary(faces[f].boundary))
+            if (support->kind == Kind::signorini)
+              for (const unsigned int node : faces[f].nodes)
+                if (supports.acts_at(*support,
+                                     dealii::Point<dim>(as_tensor<dim>(
+                                       result.node_position[node])),
+                                     faces[f].vertices))
+                  throw InputError(
+                    support->description + " acts on a face of block " +
+                    std::to_string(faces[f].block) +
+                    " that is a joint with block " +
+                    std::to_string(
+                      faces[f == record.face_first ? record.face_second :
+                                                     record.face_first]
+                        .block) +
+                    " (at " + result.describe_node(node) +
+                    "): it would set the block on a rigid support where "
+                    "the other block is; take the joint's faces out of the "
+                    "boundary '" +
+                    support->name + "' in the mesh file");
+    }
 
     // One joint constraint per node pair and group of normals (a pair on
     // two faces that make a corner gets two); the normal's canonical sign

@@ -245,6 +245,16 @@ namespace unilateral::masonry
             }
           else if (section == "$Nodes")
             {
+              // A tag listed twice would move whatever cell names it to
+              // the last of its positions: refused, as an undefined one.
+              const auto add_node = [&](const long              tag,
+                                        const dealii::Point<3> &p) {
+                if (!nodes.emplace(tag, p).second)
+                  fail(file,
+                       "node " + std::to_string(tag) +
+                         " is defined twice in $Nodes; give every node its "
+                         "own tag");
+              };
               if (version == 2.2)
                 {
                   long n = 0;
@@ -256,7 +266,7 @@ namespace unilateral::masonry
                       read_or_fail(tag);
                       for (unsigned int d = 0; d < 3; ++d)
                         read_or_fail(p[d]);
-                      nodes[tag] = p;
+                      add_node(tag, p);
                     }
                 }
               else
@@ -286,7 +296,7 @@ namespace unilateral::masonry
                           dealii::Point<3> p;
                           for (unsigned int d = 0; d < 3; ++d)
                             read_or_fail(p[d]);
-                          nodes[t] = p;
+                          add_node(t, p);
                         }
                     }
                 }

@@ -156,11 +156,14 @@ namespace unilateral::masonry
                       "1e-8",
                       Double(),
                       "Points (nodes, faces) closer than this times the "
-                      "smallest cell size coincide; in (0, 1e-3]. Faces of "
-                      "two blocks that are parallel, opposite and overlapping "
-                      "but further apart than this and closer than 1e-2 "
-                      "times the cell size (a gap or an overlap of the "
-                      "blocks) are an error.");
+                      "smallest cell size coincide, and faces whose normals "
+                      "differ by less than 4 times this are parallel (a "
+                      "joint needs both); in (0, 1e-3]. Faces of two blocks "
+                      "that are opposite and overlapping but further apart "
+                      "than this, or not parallel, and closer than 1e-2 "
+                      "times the cell size (a gap, an overlap or a tilt; "
+                      "coordinates written with too few digits) are an "
+                      "error.");
   }
 
   void

@@ -157,6 +157,8 @@ namespace unilateral::plate
                           lcp_problem.b);
     // The bending stiffness with the clamped DOFs eliminated.
     lcp_problem.known_semidefinite = true;
+    // Clamped on every side (or all but the twist): no rigid motion.
+    lcp_problem.definite = true;
     if (lcp::SolverRegistry::get(context.solver.method).needs_hierarchy)
       lcp_problem.hierarchy = make_hierarchy();
   }

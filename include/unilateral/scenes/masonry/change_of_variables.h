@@ -89,16 +89,20 @@ namespace unilateral::masonry
   };
 
   /**
-   * Direction classes: normals equal up to sign (to 1e-9) share one
-   * canonical direction d (its first component above 1e-8 in magnitude is
-   * positive), so that n = s d with s = +-1.
+   * Direction classes: normals equal up to sign (to @p tolerance in each
+   * component, 1e-9 unless the caller says otherwise) share one canonical
+   * direction d, the first of the class met (made to have its first
+   * component above 1e-8 in magnitude positive), so that n = s d with
+   * s = +-1.
    */
   template <int dim>
   class DirectionClasses
   {
   public:
+    explicit DirectionClasses(double tolerance = 1e-9);
+
     /// The class of the unit vector @p normal (a new one if none is
-    /// within 1e-9) and the sign s with normal = s d.
+    /// within the tolerance of d or -d) and the sign s with normal = s d.
     std::pair<unsigned int, double>
     classify(const Direction<dim> &normal);
 
@@ -106,7 +110,14 @@ namespace unilateral::masonry
     std::vector<Direction<dim>> directions;
 
   private:
-    std::map<std::array<long, dim>, unsigned int> index;
+    double tolerance;
+    /// The classes by their d on a grid of spacing 10 tolerance (a cell
+    /// may hold several: directions further apart than the tolerance).
+    std::map<std::array<long, dim>, std::vector<unsigned int>> index;
+
+    /// The class within the tolerance of @p d, or -1.
+    int
+    find(const Direction<dim> &d) const;
   };
 
   /// n . u = 0 at a node (normal displacement zero).
