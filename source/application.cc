@@ -265,11 +265,14 @@ namespace unilateral
     // The fix for a run that did not fit into memory: raising 'Memory
     // limit' where the limit, not the machine, was the bound.
     std::string
-    memory_fix(const Scene &scene)
+    memory_fix(const Scene &scene,
+               const double limit,
+               const double resident_before_scene)
     {
-      // A limit the run has used up before its problem is built leaves no
-      // problem small enough: then raising it is the only fix.
-      if (memory::limit_binds() && memory::available() <= 0)
+      // A limit the program used up before the scene built anything leaves
+      // no problem small enough: then raising it is the only fix. (Used up
+      // later, by the mesh or the matrices, a smaller problem fits too.)
+      if (memory::limit_binds() && limit <= resident_before_scene)
         return "raise 'Memory limit': the program alone takes more than "
                "that before it builds its problem";
       return std::string(memory::limit_binds() ?
@@ -476,8 +479,9 @@ namespace unilateral
       declare_parameters(prm, context.solver);
       parse_parameter_file(prm, parameter_file);
 
-      const SceneInfo &scene_info = SceneRegistry::get(prm.get("Scene"));
-      memory::set_limit(1e9 * prm.get_double("Memory limit"));
+      const SceneInfo &scene_info   = SceneRegistry::get(prm.get("Scene"));
+      const double     memory_limit = 1e9 * prm.get_double("Memory limit");
+      memory::set_limit(memory_limit);
 
       context.parameter_file = parameter_file;
       prm.enter_subsection("Output");
@@ -564,16 +568,18 @@ namespace unilateral
             << "--print-parameters" << std::endl;
       out << "unilateral: scene " << scene_info.name << ", run '"
           << context.run_name << "'" << std::endl;
-      lcp::Report report;
-      std::string failure;
-      bool        internal = false;
+      lcp::Report  report;
+      std::string  failure;
+      bool         internal              = false;
+      const double resident_before_scene = memory::resident();
       try
         {
           report = scene->run(context);
         }
       catch (const OutOfMemory &error)
         {
-          failure = std::string(error.what()) + "; " + memory_fix(*scene);
+          failure = std::string(error.what()) + "; " +
+                    memory_fix(*scene, memory_limit, resident_before_scene);
         }
       catch (const std::bad_alloc &)
         {
@@ -581,7 +587,8 @@ namespace unilateral
                     (memory::address_space_limit_binds() ?
                        memory::address_space_in_use() :
                        memory::format(memory::available()) + " left") +
-                    "); " + memory_fix(*scene);
+                    "); " +
+                    memory_fix(*scene, memory_limit, resident_before_scene);
         }
       catch (const std::exception &error)
         {

@@ -124,7 +124,20 @@ main()
     {"subdivisions_zero",
      "subsection Output\n  set Subdivisions = 0\nend\n",
      "Plate/Output/Subdivisions",
-     "= 0"}};
+     "= 0"},
+    // Found by a review (2026-11-27): t^3 underflows, D = 0, and the
+    // solvers blamed the lengths and the load.
+    {"rigidity_underflow",
+     "subsection Geometry\n  set Thickness = 1e-110\nend\n",
+     "Plate/Geometry/Thickness",
+     "= 1e-110"},
+    // Found by the same review: the value was printed as "21000", the
+    // material's own.
+    {"named_material_near_its_own",
+     "subsection Material\n  set Name = steel\n"
+     "  set Young's modulus = 21000.0001\nend\n",
+     "Plate/Material/Young's modulus",
+     "= 21000.0001"}};
 
   bool all = true;
   for (const Case &c : cases)
@@ -132,4 +145,27 @@ main()
   verdict("every case: exit code 1 and one line naming the parameter and the "
           "value",
           all);
+
+  // Found by the same review: 100000 x 100000 elements (the largest the
+  // parameters allow) allocated until the kernel killed the run. Refused
+  // before the mesh is built; the message quotes the machine's memory, so
+  // only its parts are checked here.
+  {
+    std::ofstream("huge.prm")
+      << "set Scene = plate\nsubsection Output\n  set Directory = results\n"
+      << "  set Write VTU = false\nend\nsubsection Plate\n"
+      << "  subsection Geometry\n    set Elements x = 100000\n"
+      << "    set Elements y = 100000\n  end\nend\n";
+    std::ostringstream out, err;
+    std::string        program = "unilateral", file = "huge.prm";
+    char              *argv[]  = {program.data(), file.data()};
+    const int          code    = unilateral::run_application(2, argv, out, err);
+    const std::string  message = err.str();
+    verdict("100000 x 100000 elements: exit code 1, one line naming the mesh "
+            "and 'Elements x' = 100000",
+            code == 1 && message.find('\n') == message.size() - 1 &&
+              message.find("the mesh of") != std::string::npos &&
+              message.find("'Plate/Geometry/Elements x' = 100000") !=
+                std::string::npos);
+  }
 }

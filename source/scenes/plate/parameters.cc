@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -227,15 +228,19 @@ namespace unilateral::plate
              {std::tuple{"Young's modulus", E_given, youngs_modulus},
               std::tuple{"Poisson's ratio", nu_given, poisson_ratio}})
           {
-            std::ostringstream requirement;
-            requirement << "is used only with 'Plate/Material/Name' = "
+            // Twelve digits: a value that differs from the material's in
+            // the seventh would read as the same number.
+            std::ostringstream requirement, value;
+            requirement << std::setprecision(12)
+                        << "is used only with 'Plate/Material/Name' = "
                         << "custom; 'Plate/Material/Name' = " << name
                         << " has its own (" << own
                         << "): set Name = custom or remove the line";
+            value << std::setprecision(12) << given;
             check_parameter(given == own || !material_entry_set(prm, entry),
                             section,
                             entry,
-                            given,
+                            value.str(),
                             requirement.str());
           }
         return;

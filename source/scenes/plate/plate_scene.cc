@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/memory.h>
 #include <unilateral/scenes/plate/bending.h>
 #include <unilateral/scenes/plate/plate_scene.h>
 
@@ -47,6 +48,22 @@ namespace unilateral::plate
     rigidity = flexural_rigidity(parameters.material.youngs_modulus,
                                  parameters.material.poisson_ratio,
                                  parameters.geometry.thickness);
+    // Each of E, t and nu is in range, but t^3 E can leave double precision
+    // (a thickness of 1e-110): then A = 0 or infinite, which the solvers
+    // would blame on the lengths or the load.
+    if (!(rigidity > 0 && std::isfinite(rigidity)))
+      {
+        std::ostringstream message;
+        message << "the bending rigidity D = E t^3 / (12 (1 - nu^2)) of "
+                   "'Plate/Geometry/Thickness' = "
+                << parameters.geometry.thickness
+                << " and 'Plate/Material/Young's modulus' = "
+                << parameters.material.youngs_modulus << " is " << rigidity
+                << ", beyond double precision: give them in units nearer "
+                   "to each other (mm and kg/mm^2 for steel: t = 2, E = "
+                   "21000)";
+        throw InputError(message.str());
+      }
     // The expressions were checked while parsing; these cannot fail.
     if (parameters.obstacle.present())
       obstacle = parse_function("Plate/Obstacle/Function",
@@ -59,6 +76,15 @@ namespace unilateral::plate
   PlateScene::make_grid(RunContext &)
   {
     const Geometry &geometry = parameters.geometry;
+    // Refused before anything is built where the mesh and its DOFs alone
+    // would not fit (a lower bound per cell, below every method's peak per
+    // cell in benchmarks/plate_multigrid/README.md): 100000 x 100000
+    // elements, which the parameters allow, would otherwise allocate until
+    // the kernel kills the run.
+    const double n_cells = static_cast<double>(geometry.n_x) * geometry.n_y;
+    memory::require(n_cells * 1e3,
+                    "the mesh of " + dealii::Utilities::to_string(n_cells) +
+                      " elements and its set-up");
     dealii::GridGenerator::subdivided_hyper_rectangle(
       triangulation,
       {geometry.n_x, geometry.n_y},
