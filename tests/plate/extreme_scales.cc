@@ -11,6 +11,10 @@
 //  3. an obstacle at 1e150 or 1e-150 above the plate, under a load far
 //     too weak to matter: tnnmg as pdas (scaled by the load alone in a
 //     first fix, tnnmg broke down).
+//  4. elements 5e4 times longer than wide (100000 x 2 on the 100 mm
+//     plate): PDAS's factorisation judges the stiffness singular, and the
+//     failure line must name the elements' shape (found by a review,
+//     2026-11-27: it blamed lengths far from 1 in the plate's units).
 #include "plate_runs.h"
 
 #include <cmath>
@@ -102,4 +106,20 @@ main()
                       "NO")
                 << "\n";
     }
+  {
+    const Run elongated =
+      run_plate("elongated",
+                "subsection Geometry\n  set Elements x = 100000\n"
+                "  set Elements y = 2\nend\n",
+                "pdas");
+    std::cout << "elements 5e4 times longer than wide, pdas: "
+              << (elongated.report.converged() ? "converged" : "not converged")
+              << ", the failure line names their shape: "
+              << (!elongated.report.converged() &&
+                      elongated.scene->failure_description(elongated.report)
+                          .find("times longer than wide") != std::string::npos ?
+                    "yes" :
+                    "NO")
+              << "\n";
+  }
 }

@@ -325,6 +325,26 @@ namespace unilateral::plate
     if (report.status != lcp::Status::singular ||
         report.message.find("is singular") == std::string::npos)
       return Scene::failure_description(report);
+    // Elements far from square scale the unknowns apart by their own
+    // ratio, whatever the units.
+    const Geometry &g      = parameters.geometry;
+    const double    h_x    = g.length_x / g.n_x;
+    const double    h_y    = g.length_y / g.n_y;
+    const double    aspect = std::max(h_x / h_y, h_y / h_x);
+    if (aspect > 100)
+      {
+        std::ostringstream message;
+        message << std::setprecision(3)
+                << "a factorisation judged the plate's stiffness singular, "
+                   "but a clamped plate's is positive definite: its "
+                   "condition estimate (smallest to largest pivot) fell "
+                   "below 1e-14, most likely because the elements are "
+                << aspect << " times longer than wide (" << h_x << " x " << h_y
+                << "): choose 'Plate/Geometry/Elements x' and 'Elements y' "
+                   "so that the elements are nearer square ("
+                << report.message << ")";
+        return message.str();
+      }
     return "a factorisation judged the plate's stiffness singular, but a "
            "clamped plate's is positive definite: its condition estimate "
            "(smallest to largest pivot) fell below 1e-14, most likely because the "
