@@ -105,8 +105,9 @@ namespace unilateral::lcp
   bool
   Mprgp::conjugate_gradient_or_expansion(Vector &x)
   {
-    const Vector Hp  = product(p);
-    const double pHp = p.dot(Hp);
+    const Vector Hp      = product(p);
+    const double pHp     = p.dot(Hp);
+    curvature_overflowed = !std::isfinite(pHp);
     if (!(pHp > 0))
       return false;
     const double alpha_cg = g.dot(p) / pHp;
@@ -173,8 +174,9 @@ namespace unilateral::lcp
   bool
   Mprgp::proportioning(Vector &x, const Vector &beta)
   {
-    const Vector Hd  = product(beta);
-    const double dHd = beta.dot(Hd);
+    const Vector Hd      = product(beta);
+    const double dHd     = beta.dot(Hd);
+    curvature_overflowed = !std::isfinite(dHd);
     if (!(dHd > 0))
       return false;
     const double alpha = g.dot(beta) / dHd;
@@ -203,9 +205,12 @@ namespace unilateral::lcp
           return Outcome::iteration_limit;
         const bool proportional =
           beta.squaredNorm() <= gamma * gamma * reduced_times_free(x, phi);
+        // A curvature that is not finite is an overflow of d^T H d (a
+        // problem in numbers near 1e154 or beyond), not an indefinite H.
         if (!(proportional ? conjugate_gradient_or_expansion(x) :
                              proportioning(x, beta)))
-          return Outcome::not_definite;
+          return curvature_overflowed ? Outcome::diverged :
+                                        Outcome::not_definite;
       }
   }
 } // namespace unilateral::lcp

@@ -48,7 +48,7 @@ namespace unilateral::lcp
       converged,       ///< @p stop returned true
       iteration_limit, ///< max_steps steps taken
       not_definite,    ///< a direction d with d^T H d <= 0
-      diverged         ///< a non-finite iterate
+      diverged         ///< a non-finite iterate or curvature d^T H d
     };
 
     /**
@@ -115,6 +115,9 @@ namespace unilateral::lcp
     }
 
   private:
+    /// The last curvature computed was not finite (overflow).
+    bool curvature_overflowed = false;
+
     Vector
     free_gradient(const Vector &x) const;
 

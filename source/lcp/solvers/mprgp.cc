@@ -168,8 +168,12 @@ namespace unilateral::lcp
                              "not positive definite";
             break;
           case unilateral::lcp::Mprgp::Outcome::diverged:
-            report.status  = Status::singular;
-            report.message = "MPRGP diverged (non-finite iterate)";
+            report.status = Status::singular;
+            report.message =
+              "MPRGP diverged (a non-finite iterate or curvature d^T A d: "
+              "numbers beyond double precision, such as loads or bounds "
+              "near 1e150; give them in units nearer to each other, or use "
+              "'Solver/Method = pdas')";
             break;
         }
     }
