@@ -312,11 +312,22 @@ namespace unilateral::masonry
                         const double                        direction_tolerance)
     {
       // The faces without a joint on a grid of cells as large as the
-      // largest face, each in every cell its box (grown by near) meets;
-      // then every face looks in the cells its own box meets.
-      double spacing = near;
+      // median face (or 1/64 of the largest: a huge face then spans a
+      // bounded number of cells, and a cell holds few small faces), each in
+      // every cell its box (grown by near) meets; then every face looks in
+      // the cells its own box meets.
+      if (faces.empty())
+        return;
+      std::vector<double> diameters;
       for (const FaceRecord<dim> &face : faces)
-        spacing = std::max(spacing, face.diameter);
+        diameters.push_back(face.diameter);
+      std::nth_element(diameters.begin(),
+                       diameters.begin() + diameters.size() / 2,
+                       diameters.end());
+      const double spacing =
+        std::max({near,
+                  diameters[diameters.size() / 2],
+                  *std::max_element(diameters.begin(), diameters.end()) / 64});
       using Cell     = std::array<long, dim>;
       const auto box = [&](const FaceRecord<dim> &face) {
         std::array<Cell, 2> range;
@@ -947,8 +958,14 @@ namespace unilateral::masonry
 
     {
       std::vector<char> joined(faces.size(), 0);
+      // The block across each joined face.
+      std::vector<long> partner_block(faces.size(), -1);
       for (const auto &[pair, record] : joint_pairs)
-        joined[record.face_first] = joined[record.face_second] = 1;
+        {
+          joined[record.face_first] = joined[record.face_second] = 1;
+          partner_block[record.face_first]  = faces[record.face_second].block;
+          partner_block[record.face_second] = faces[record.face_first].block;
+        }
       refuse_tilted_faces<dim>(faces,
                                face_class,
                                joined,
@@ -962,8 +979,8 @@ namespace unilateral::masonry
       // support where the other block is. (Rollers and held nodes on
       // joints are two-sided and meant: the symmetry plane of an extruded
       // wall.)
-      for (const auto &[pair, record] : joint_pairs)
-        for (const std::size_t f : {record.face_first, record.face_second})
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        if (partner_block[f] >= 0)
           for (const Support<dim> *support :
                supports.on_boundary(faces[f].boundary))
             if (support->kind == Kind::signorini)
@@ -976,11 +993,8 @@ namespace unilateral::masonry
                     support->description + " acts on a face of block " +
                     std::to_string(faces[f].block) +
                     " that is a joint with block " +
-                    std::to_string(
-                      faces[f == record.face_first ? record.face_second :
-                                                     record.face_first]
-                        .block) +
-                    " (at " + result.describe_node(node) +
+                    std::to_string(partner_block[f]) + " (at " +
+                    result.describe_node(node) +
                     "): it would set the block on a rigid support where "
                     "the other block is; take the joint's faces out of the "
                     "boundary '" +
