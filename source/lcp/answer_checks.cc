@@ -247,7 +247,9 @@ namespace unilateral::lcp
                  "residual is "
               << residual / forces
               << " of the largest load or contact force (> 'Solver/KKT "
-                 "tolerance'), counting a force on an open contact, although "
+                 "tolerance' and ten times its rounding error, "
+              << 10 * resolution
+              << "), counting a force on an open contact, although "
                  "the relative KKT residuals pass (a body held by round-off, "
                  "or a contact force far smaller than the problem's largest "
                  "motion?)";

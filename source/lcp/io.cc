@@ -3,6 +3,7 @@
 #include <unilateral/lcp/io.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +27,17 @@ namespace unilateral::lcp
       if (!in)
         throw InputError("cannot read " + what + " file '" + file_name +
                          "': no such file, or not readable");
+      // Some editors start a text file with a UTF-8 byte-order mark, which
+      // would read as part of the first word.
+      char mark[3] = {};
+      in.read(mark, 3);
+      if (in.gcount() == 3 && mark[0] == '\xEF' && mark[1] == '\xBB' &&
+          mark[2] == '\xBF')
+        throw InputError(what + " file '" + file_name +
+                         "' starts with a byte-order mark; save it without "
+                         "one (plain UTF-8 or ASCII)");
+      in.clear();
+      in.seekg(0);
       return in;
     }
 
@@ -151,6 +163,7 @@ namespace unilateral::lcp
     if (rows < 0)
       fail(file_name, line_number, "missing the size line");
     if (rows > std::numeric_limits<Index>::max() ||
+        cols > std::numeric_limits<Index>::max() ||
         entries > std::numeric_limits<Index>::max())
       fail(file_name, line_number, "matrix too large for 32-bit indices");
     if (check_size)
@@ -164,6 +177,8 @@ namespace unilateral::lcp
     const long long expected_entries = std::min(entries, room);
     std::vector<Eigen::Triplet<double, Index>> triplets;
     triplets.reserve(symmetric ? 2 * expected_entries : expected_entries);
+    std::vector<std::array<unsigned int, 3>> positions;
+    positions.reserve(expected_entries);
     long long read = 0;
     while (read < entries && std::getline(in, line))
       {
@@ -188,8 +203,30 @@ namespace unilateral::lcp
         triplets.emplace_back(i - 1, j - 1, value);
         if (symmetric && i != j)
           triplets.emplace_back(j - 1, i - 1, value);
+        // Where it stands (a symmetric file's (i, j) and (j, i) are one
+        // entry), for the check that none is listed twice.
+        positions.push_back(std::array<unsigned int, 3>{
+          {static_cast<unsigned int>(symmetric ? std::max(i, j) : i),
+           static_cast<unsigned int>(symmetric ? std::min(i, j) : j),
+           line_number}});
         ++read;
       }
+    // An entry listed twice would be summed (Eigen's triplets): in a
+    // symmetric file that has both triangles, every off-diagonal entry
+    // would count double.
+    std::sort(positions.begin(), positions.end());
+    for (std::size_t k = 1; k < positions.size(); ++k)
+      if (positions[k][0] == positions[k - 1][0] &&
+          positions[k][1] == positions[k - 1][1])
+        fail(file_name,
+             positions[k][2],
+             "the entry in row " + std::to_string(positions[k][0]) +
+               ", column " + std::to_string(positions[k][1]) +
+               " is listed twice (also on line " +
+               std::to_string(positions[k - 1][2]) + ")" +
+               (symmetric ? ", or with its mirror: a symmetric file lists "
+                            "one triangle only" :
+                            ""));
     if (read < entries)
       fail(file_name,
            line_number,
@@ -309,7 +346,9 @@ namespace unilateral::lcp
         if (i < 1 || i > std::numeric_limits<Index>::max())
           fail(file_name,
                line_number,
-               "index " + si + " must be >= 1 (indices are 1-based)");
+               "index " + si +
+                 (i < 1 ? " must be >= 1 (indices are 1-based)" :
+                          " is beyond 32-bit indices"));
         if (size >= 0 && i > size)
           fail(file_name,
                line_number,

@@ -127,24 +127,19 @@ namespace unilateral::lcp
     }
 
     // Every entry of A finite; returns the largest magnitude.
-    double
+    void
     check_finite_entries(const Problem &problem)
     {
-      const Index n         = problem.size();
-      double      max_entry = 0;
+      const Index n = problem.size();
       for (Index j = 0; j < n; ++j)
         for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-          {
-            if (!std::isfinite(it.value()))
-              fail("the entry of A in row " + std::to_string(it.row() + 1) +
-                   ", column " + std::to_string(j + 1) +
-                   " (counted from 1) is not a finite number");
-            max_entry = std::max(max_entry, std::abs(it.value()));
-          }
-      return max_entry;
+          if (!std::isfinite(it.value()))
+            fail("the entry of A in row " + std::to_string(it.row() + 1) +
+                 ", column " + std::to_string(j + 1) +
+                 " (counted from 1) is not a finite number");
     }
 
-    // Symmetry, relative to the largest entry: every entry against its
+    // Symmetry, relative to each entry's scale: every entry against its
     // mirror, without a transposed copy (building A - A^T costs far more
     // than the comparison on large matrices; benchmarks/masonry_tables/
     // README.md, "Design measurements"). The columns are walked in order,
@@ -153,7 +148,7 @@ namespace unilateral::lcp
     // in a single pass, and an entry above the diagonal that the cursor
     // passes over has no mirror.
     void
-    check_symmetry(Problem &problem, const double max_entry)
+    check_symmetry(Problem &problem)
     {
       const Index n      = problem.size();
       bool        sorted = true;
@@ -168,11 +163,19 @@ namespace unilateral::lcp
       const auto *const column_start = problem.A.outerIndexPtr();
       const auto *const row_index    = problem.A.innerIndexPtr();
       const double     *value        = problem.A.valuePtr();
+      const Vector      diagonal     = problem.A.diagonal();
       const auto        compare      = [&](const Index  row,
                                const Index  column,
                                const double entry,
                                const double mirror) {
-        if (std::abs(entry - mirror) <= 1e-12 * max_entry)
+        // Relative to the entries' own scale (for a semidefinite A, |a_ij|
+        // <= sqrt(a_ii a_jj)), not to the largest of A: an asymmetry of
+        // order one beside an entry of 1e12 elsewhere is one.
+        const double scale =
+          std::max({std::sqrt(std::abs(diagonal[row] * diagonal[column])),
+                    std::abs(entry),
+                    std::abs(mirror)});
+        if (std::abs(entry - mirror) <= 1e-12 * scale)
           return;
         std::ostringstream message;
         message << "A is not symmetric: its entry in row " << row + 1
@@ -255,8 +258,8 @@ namespace unilateral::lcp
     check_b_and_bounds(problem);
     sort_constrained(problem);
     problem.A.makeCompressed();
-    const double max_entry = check_finite_entries(problem);
-    check_symmetry(problem, max_entry);
+    check_finite_entries(problem);
+    check_symmetry(problem);
     check_and_complete_diagonal(problem);
   }
 

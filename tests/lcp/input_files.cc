@@ -1,4 +1,4 @@
-// Two ways a file of the lcp scene went wrong without a clear word (found
+// Ways a file of the lcp scene went wrong without a clear word (found
 // by benchmarks/stress/bad_input.py, issue 21): a directory given as the
 // matrix file was read as an empty file ("A.mtx:1: empty file"), and a
 // lower bound of -inf, which lcp/io.h documents as not allowed (an index
@@ -67,4 +67,57 @@ main()
   expect_error("a size line of 2e9 rows with b of one entry",
                run({"huge.prm"}),
                {"dimension mismatch"});
+
+  // Found by a review (2026-11-27), each solved with exit 0 or crashing:
+  // a column count beyond 32 bits wrapped (an entry in column 5 of a
+  // "3 x 4294967299" matrix was added to A(1, 1));
+  write("wide.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n2 4294967298 3\n"
+        "1 1 2\n2 1 -1\n2 2 2\n");
+  expect_error("a column count beyond 32-bit indices",
+               run_lcp("wide", "wide.mtx", "c.txt"),
+               {"wide.mtx:2:", "32-bit"});
+  // a symmetric file with both triangles counted every off-diagonal entry
+  // twice (Eigen sums repeated triplets), and so did a general file its
+  // repeated entries;
+  write("both.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n2 2 4\n"
+        "1 1 2\n2 1 -1\n1 2 -1\n2 2 2\n");
+  expect_error("a symmetric file listing both triangles",
+               run_lcp("both", "both.mtx", "c.txt"),
+               {"both.mtx:5:", "listed twice"});
+  write("twice.mtx",
+        "%%MatrixMarket matrix coordinate real general\n2 2 5\n"
+        "1 1 2\n2 1 -1\n1 2 -1\n2 2 1\n2 2 1\n");
+  expect_error("a general file listing an entry twice",
+               run_lcp("twice", "twice.mtx", "c.txt"),
+               {"twice.mtx:7:", "listed twice"});
+  // an asymmetry of 0.4 beside an entry of 1e12 passed the symmetry test
+  // (relative to the largest entry), and methods solved another problem;
+  write("skew.mtx",
+        "%%MatrixMarket matrix coordinate real general\n3 3 5\n"
+        "1 1 1e12\n2 2 1\n3 3 1\n3 2 0.9\n2 3 0.5\n");
+  write("b3.txt", "1\n-2\n1\n");
+  write("skew.prm",
+        "set Scene = lcp\n"
+        "subsection Output\n  set Directory = results\n"
+        "  set Print timings = false\n  set Progress = false\nend\n"
+        "subsection LCP\n  set Matrix file = skew.mtx\n"
+        "  set Right-hand side file = b3.txt\n"
+        "  set Constraints file = c.txt\nend\n");
+  expect_error("an asymmetry far below the largest entry",
+               run({"skew.prm"}),
+               {"not symmetric", "0.9", "0.5"});
+  // a constraint index beyond 32 bits was called below 1, and a file with
+  // a byte-order mark was refused without naming it.
+  write("c_wide.txt", "4294967297 0\n");
+  expect_error("a constraint index beyond 32 bits",
+               run_lcp("c_wide", "A.mtx", "c_wide.txt"),
+               {"c_wide.txt:1:", "beyond 32-bit"});
+  write("bom.mtx",
+        "\xEF\xBB\xBF%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n"
+        "1 1 2\n2 1 -1\n2 2 2\n");
+  expect_error("a byte-order mark",
+               run_lcp("bom", "bom.mtx", "c.txt"),
+               {"bom.mtx", "byte-order mark"});
 }

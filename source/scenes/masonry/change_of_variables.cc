@@ -276,11 +276,13 @@ namespace unilateral::masonry
   {}
 
   template <int dim>
-  int
+  std::pair<int, double>
   DirectionClasses<dim>::find(const Direction<dim> &d) const
   {
     // Probe the neighbouring cells of the grid, so that directions within
     // the tolerance meet whichever side of a cell edge they fall on.
+    int                   nearest  = -1;
+    double                smallest = 0;
     std::array<long, dim> key;
     for (unsigned int c = 0; c < dim; ++c)
       key[c] = std::lround(d[c] / (10 * tolerance));
@@ -298,11 +300,18 @@ namespace unilateral::masonry
             for (unsigned int c = 0; c < dim; ++c)
               difference =
                 std::max(difference, std::abs(directions[k][c] - d[c]));
-            if (difference <= tolerance)
-              return static_cast<int>(k);
+            // The nearest, then the oldest: a pure function of d and the
+            // classes, not of the order of the probes.
+            if (difference <= tolerance &&
+                (nearest < 0 || difference < smallest ||
+                 (difference == smallest && static_cast<int>(k) < nearest)))
+              {
+                nearest  = static_cast<int>(k);
+                smallest = difference;
+              }
           }
       }
-    return -1;
+    return {nearest, smallest};
   }
 
   template <int dim>
@@ -324,10 +333,12 @@ namespace unilateral::masonry
       }
     // Both orientations: a normal whose first components are about as
     // small as 1e-8 may have got the other sign than its class's d.
-    if (const int k = find(d); k >= 0)
+    const auto [k, difference]                   = find(d);
+    const auto [k_opposite, difference_opposite] = find(opposite);
+    if (k_opposite >= 0 && (k < 0 || difference_opposite < difference))
+      return {static_cast<unsigned int>(k_opposite), -sign};
+    if (k >= 0)
       return {static_cast<unsigned int>(k), sign};
-    if (const int k = find(opposite); k >= 0)
-      return {static_cast<unsigned int>(k), -sign};
     std::array<long, dim> key;
     for (unsigned int c = 0; c < dim; ++c)
       key[c] = std::lround(d[c] / (10 * tolerance));

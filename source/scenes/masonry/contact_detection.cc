@@ -418,6 +418,13 @@ namespace unilateral::masonry
                 continue;
               const double angle = std::acos(
                 std::max(-1.0, std::min(1.0, -(a.normal * b.normal))));
+              // Classes are made so that this cannot be (the nearest is
+              // taken, after all are made); were it, the faces would be
+              // refused for a tilt they do not have.
+              if (angle <= direction_tolerance)
+                throw std::logic_error(
+                  "contact detection: faces within the direction tolerance "
+                  "in two direction classes");
               double distance = 0;
               for (const auto &v : b.vertices)
                 distance =
@@ -791,6 +798,11 @@ namespace unilateral::masonry
       bool        plus;
     };
     std::vector<std::vector<ClassFace>> by_class;
+    // Twice: the classes are all made in the first pass, and the second
+    // gives each face the nearest, so that faces with one normal get one
+    // class whatever their order (a class made later may be nearer).
+    for (const FaceRecord<dim> &face : faces)
+      classes.classify(as_array<dim>(face.normal));
     for (std::size_t f = 0; f < faces.size(); ++f)
       {
         const auto [k, sign] = classes.classify(as_array<dim>(faces[f].normal));
@@ -996,8 +1008,9 @@ namespace unilateral::masonry
                     std::to_string(partner_block[f]) + " (at " +
                     result.describe_node(node) +
                     "): it would set the block on a rigid support where "
-                    "the other block is; take the joint's faces out of the "
-                    "boundary '" +
+                    "the other block is; a Signorini support belongs on the "
+                    "structure's outer faces: name another boundary, or "
+                    "take the joint's faces out of the group '" +
                     support->name + "' in the mesh file");
     }
 

@@ -101,8 +101,11 @@ namespace unilateral::masonry
   public:
     explicit DirectionClasses(double tolerance = 1e-9);
 
-    /// The class of the unit vector @p normal (a new one if none is
-    /// within the tolerance of d or -d) and the sign s with normal = s d.
+    /// The class of the unit vector @p normal, the nearest within the
+    /// tolerance of d or -d (a new one if none is), and the sign s with
+    /// normal = s d. A class made later may be nearer to a direction
+    /// classified before: where equal normals must get one class, classify
+    /// them all once and then again (the second pass makes none).
     std::pair<unsigned int, double>
     classify(const Direction<dim> &normal);
 
@@ -115,8 +118,9 @@ namespace unilateral::masonry
     /// may hold several: directions further apart than the tolerance).
     std::map<std::array<long, dim>, std::vector<unsigned int>> index;
 
-    /// The class within the tolerance of @p d, or -1.
-    int
+    /// The nearest class within the tolerance of @p d (-1 if none) and
+    /// its distance.
+    std::pair<int, double>
     find(const Direction<dim> &d) const;
   };
 
