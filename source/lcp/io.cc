@@ -108,6 +108,31 @@ namespace unilateral::lcp
       value     = std::strtoll(token.c_str(), &end, 10);
       return end == token.c_str() + token.size();
     }
+    /**
+     * An entry listed twice would be summed (Eigen's triplets): in a
+     * symmetric file that has both triangles, every off-diagonal entry
+     * would count double. @p positions: row, column (a symmetric file's
+     * (i, j) and (j, i) as one) and line of each entry.
+     */
+    void
+    refuse_repeated_entries(const std::string                        &file_name,
+                            std::vector<std::array<unsigned int, 3>> &positions,
+                            const bool                                symmetric)
+    {
+      std::sort(positions.begin(), positions.end());
+      for (std::size_t k = 1; k < positions.size(); ++k)
+        if (positions[k][0] == positions[k - 1][0] &&
+            positions[k][1] == positions[k - 1][1])
+          fail(file_name,
+               positions[k][2],
+               "the entry in row " + std::to_string(positions[k][0]) +
+                 ", column " + std::to_string(positions[k][1]) +
+                 " is listed twice (also on line " +
+                 std::to_string(positions[k - 1][2]) + ")" +
+                 (symmetric ? ", or with its mirror: a symmetric file lists "
+                              "one triangle only" :
+                              ""));
+    }
   } // namespace
 
   SparseMatrix
@@ -203,30 +228,14 @@ namespace unilateral::lcp
         triplets.emplace_back(i - 1, j - 1, value);
         if (symmetric && i != j)
           triplets.emplace_back(j - 1, i - 1, value);
-        // Where it stands (a symmetric file's (i, j) and (j, i) are one
-        // entry), for the check that none is listed twice.
+        // Where it stands, for refuse_repeated_entries.
         positions.push_back(std::array<unsigned int, 3>{
           {static_cast<unsigned int>(symmetric ? std::max(i, j) : i),
            static_cast<unsigned int>(symmetric ? std::min(i, j) : j),
            line_number}});
         ++read;
       }
-    // An entry listed twice would be summed (Eigen's triplets): in a
-    // symmetric file that has both triangles, every off-diagonal entry
-    // would count double.
-    std::sort(positions.begin(), positions.end());
-    for (std::size_t k = 1; k < positions.size(); ++k)
-      if (positions[k][0] == positions[k - 1][0] &&
-          positions[k][1] == positions[k - 1][1])
-        fail(file_name,
-             positions[k][2],
-             "the entry in row " + std::to_string(positions[k][0]) +
-               ", column " + std::to_string(positions[k][1]) +
-               " is listed twice (also on line " +
-               std::to_string(positions[k - 1][2]) + ")" +
-               (symmetric ? ", or with its mirror: a symmetric file lists "
-                            "one triangle only" :
-                            ""));
+    refuse_repeated_entries(file_name, positions, symmetric);
     if (read < entries)
       fail(file_name,
            line_number,
