@@ -27,17 +27,15 @@ namespace unilateral::lcp
       if (!in)
         throw InputError("cannot read " + what + " file '" + file_name +
                          "': no such file, or not readable");
-      // Some editors start a text file with a UTF-8 byte-order mark, which
-      // would read as part of the first word.
-      char mark[3] = {};
-      in.read(mark, 3);
-      if (in.gcount() == 3 && mark[0] == '\xEF' && mark[1] == '\xBB' &&
-          mark[2] == '\xBF')
+      // Some editors start a text file with a UTF-8 byte-order mark (0xEF
+      // 0xBB 0xBF), which would read as part of the first word. Its first
+      // byte starts no valid file: peeked at, so that a pipe, which cannot
+      // seek back, reads as a file.
+      if (in.peek() == 0xEF)
         throw InputError(what + " file '" + file_name +
-                         "' starts with a byte-order mark; save it without "
-                         "one (plain UTF-8 or ASCII)");
-      in.clear();
-      in.seekg(0);
+                         "' starts with a byte-order mark (or another "
+                         "non-ASCII byte); save it without one (plain UTF-8 "
+                         "or ASCII)");
       return in;
     }
 

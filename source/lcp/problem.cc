@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -127,16 +128,21 @@ namespace unilateral::lcp
     }
 
     // Every entry of A finite; returns the largest magnitude.
-    void
+    double
     check_finite_entries(const Problem &problem)
     {
-      const Index n = problem.size();
+      const Index n         = problem.size();
+      double      max_entry = 0;
       for (Index j = 0; j < n; ++j)
         for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-          if (!std::isfinite(it.value()))
-            fail("the entry of A in row " + std::to_string(it.row() + 1) +
-                 ", column " + std::to_string(j + 1) +
-                 " (counted from 1) is not a finite number");
+          {
+            if (!std::isfinite(it.value()))
+              fail("the entry of A in row " + std::to_string(it.row() + 1) +
+                   ", column " + std::to_string(j + 1) +
+                   " (counted from 1) is not a finite number");
+            max_entry = std::max(max_entry, std::abs(it.value()));
+          }
+      return max_entry;
     }
 
     // Symmetry, relative to each entry's scale: every entry against its
@@ -148,7 +154,7 @@ namespace unilateral::lcp
     // in a single pass, and an entry above the diagonal that the cursor
     // passes over has no mirror.
     void
-    check_symmetry(Problem &problem)
+    check_symmetry(Problem &problem, const double max_entry)
     {
       const Index n      = problem.size();
       bool        sorted = true;
@@ -169,21 +175,24 @@ namespace unilateral::lcp
                                const double entry,
                                const double mirror) {
         // Relative to the entries' own scale (for a semidefinite A, |a_ij|
-        // <= sqrt(a_ii a_jj)), not to the largest of A: an asymmetry of
-        // order one beside an entry of 1e12 elsewhere is one.
+        // <= sqrt(a_ii a_jj)): an asymmetry of order one beside an entry of
+        // 1e12 elsewhere is one. Plus 1e-14 of the largest entry: the
+        // rounding of a product T^T K T, where a diagonal entry that came
+        // out of cancellation is no scale.
         const double scale =
           std::max({std::sqrt(std::abs(diagonal[row] * diagonal[column])),
                     std::abs(entry),
                     std::abs(mirror)});
-        if (std::abs(entry - mirror) <= 1e-12 * scale)
+        if (std::abs(entry - mirror) <= 1e-12 * scale + 1e-14 * max_entry)
           return;
         std::ostringstream message;
+        // The difference too: entries equal to six digits would read alike.
         message << "A is not symmetric: its entry in row " << row + 1
                 << ", column " << column + 1 << " is " << entry
                 << ", the one in row " << column + 1 << ", column " << row + 1
-                << " is " << mirror
-                << " (counted from 1); the LCP needs a symmetric "
-                               "positive semidefinite A";
+                << " is " << mirror << " (counted from 1; they differ by "
+                << std::setprecision(3) << std::abs(entry - mirror)
+                << "); the LCP needs a symmetric positive semidefinite A";
         fail(message.str());
       };
       // cursor[i]: the first entry of column i not yet matched.
@@ -258,8 +267,8 @@ namespace unilateral::lcp
     check_b_and_bounds(problem);
     sort_constrained(problem);
     problem.A.makeCompressed();
-    check_finite_entries(problem);
-    check_symmetry(problem);
+    const double max_entry = check_finite_entries(problem);
+    check_symmetry(problem, max_entry);
     check_and_complete_diagonal(problem);
   }
 

@@ -286,6 +286,39 @@ main()
                         1e-3 * std::abs(straight.second))
               << "\n";
   }
+  // Found by a review of that fix: direction classes do not chain. Four
+  // unit squares, two alone with tops tilted by 0 and 6e-8 (two classes),
+  // and a joint whose faces are tilted by 2.8e-8 and 3.2e-8: each face
+  // fell into its nearest class, a different one, and the joint was not
+  // made (a first fix then refused the wall as tilted, with exit 3). The
+  // -d faces of neighbouring classes are now compared too.
+  {
+    write("classes.msh",
+          header +
+            "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
+            "$Nodes\n16\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 3 0 0\n"
+            "6 4 0 0\n7 4 0.99999994000000003 0\n8 3 1 0\n9 6 0 0\n"
+            "10 7 0 0\n11 7 0.99999997200000001 0\n12 6 1 0\n13 6 1 0\n"
+            "14 7 0.99999996800000002 0\n15 7 2 0\n16 6 2 0\n$EndNodes\n"
+            "$Elements\n7\n1 1 2 7 101 1 2\n2 1 2 7 102 5 6\n"
+            "3 1 2 7 103 9 10\n4 3 2 1 1 1 2 3 4\n5 3 2 1 2 5 6 7 8\n"
+            "6 3 2 1 3 9 10 11 12\n7 3 2 1 4 13 14 15 16\n$EndElements\n");
+    write("classes.prm",
+          "set Scene = masonry\nsubsection Output\n"
+          "  set Directory = results\n  set Write VTU = false\n"
+          "  set Progress = false\nend\nsubsection Masonry\n"
+          "  set Geometry = mesh file\n  set Mesh file = classes.msh\n"
+          "  subsection Boundary conditions\n"
+          "    set Normal displacement zero =\n    set Signorini =\n"
+          "    set Traction boundaries =\n    set Fixed = base\n  end\nend\n");
+    const Result result = run({"classes.prm"});
+    std::cout << "a joint whose faces lie in neighbouring direction classes: "
+                 "exit code "
+              << result.code << ", its three node pairs joined: "
+              << yes_no(result.out.find("joints: 3 horizontal") !=
+                        std::string::npos)
+              << "\n";
+  }
   // Found by the same review: the boundary 'base' also on the lower side
   // of the upper of two stacked squares (nodes of their own): a Signorini
   // support there set the upper square on a rigid support inside the lower

@@ -315,6 +315,40 @@ namespace unilateral::masonry
   }
 
   template <int dim>
+  std::vector<std::pair<unsigned int, double>>
+  DirectionClasses<dim>::within(const Direction<dim> &d,
+                                const double          radius) const
+  {
+    std::vector<std::pair<unsigned int, double>> result;
+    for (const double orientation : {1.0, -1.0})
+      {
+        std::array<long, dim> key;
+        for (unsigned int c = 0; c < dim; ++c)
+          key[c] = std::lround(orientation * d[c] / (10 * tolerance));
+        for (unsigned int probe = 0; probe < (dim == 2 ? 9u : 27u); ++probe)
+          {
+            std::array<long, dim> neighbour = key;
+            for (unsigned int c = 0, p = probe; c < dim; ++c, p /= 3)
+              neighbour[c] += static_cast<long>(p % 3) - 1;
+            const auto found = index.find(neighbour);
+            if (found == index.end())
+              continue;
+            for (const unsigned int k : found->second)
+              {
+                double difference = 0;
+                for (unsigned int c = 0; c < dim; ++c)
+                  difference =
+                    std::max(difference,
+                             std::abs(directions[k][c] - orientation * d[c]));
+                if (difference <= radius)
+                  result.emplace_back(k, orientation);
+              }
+          }
+      }
+    return result;
+  }
+
+  template <int dim>
   std::pair<unsigned int, double>
   DirectionClasses<dim>::classify(const Direction<dim> &normal)
   {

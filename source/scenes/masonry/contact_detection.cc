@@ -290,6 +290,20 @@ namespace unilateral::masonry
       std::vector<std::size_t>  signorini_face;
     };
 
+    /// Whether @p a and @p b differ by at most @p tolerance in every
+    /// component (the direction classes' measure).
+    template <int dim>
+    bool
+    within_tolerance(const dealii::Tensor<1, dim> &a,
+                     const dealii::Tensor<1, dim> &b,
+                     const double                  tolerance)
+    {
+      for (unsigned int c = 0; c < dim; ++c)
+        if (std::abs(a[c] - b[c]) > tolerance)
+          return false;
+      return true;
+    }
+
     /**
      * Refuses faces of two blocks that nearly coincide but are not
      * parallel: each face's vertices within @p near of the other's plane,
@@ -412,19 +426,16 @@ namespace unilateral::masonry
           for (const std::size_t q : list->second)
             {
               const FaceRecord<dim> &a = faces[p], &b = faces[q];
+              // Faces within the tolerance of each other were compared
+              // for a joint (in one class or in neighbouring ones).
               if (a.block == b.block || face_class[p] == face_class[q] ||
+                  within_tolerance(a.normal, -b.normal, direction_tolerance) ||
                   a.normal * b.normal >= 0 || !near_plane(a, b) ||
                   !near_plane(b, a) || overlap(a, b) <= tolerance)
                 continue;
               const double angle = std::acos(
                 std::max(-1.0, std::min(1.0, -(a.normal * b.normal))));
-              // Classes are made so that this cannot be (the nearest is
-              // taken, after all are made); were it, the faces would be
-              // refused for a tilt they do not have.
-              if (angle <= direction_tolerance)
-                throw std::logic_error(
-                  "contact detection: faces within the direction tolerance "
-                  "in two direction classes");
+
               double distance = 0;
               for (const auto &v : b.vertices)
                 distance =
@@ -796,6 +807,9 @@ namespace unilateral::masonry
       double      offset; ///< d . x on the face
       double      lo, hi; ///< extent along the first in-plane axis
       bool        plus;
+      /// From a neighbouring class: joined only to a face whose normal is
+      /// within the direction tolerance of its own.
+      bool neighbour = false;
     };
     std::vector<std::vector<ClassFace>> by_class;
     // Twice: the classes are all made in the first pass, and the second
@@ -825,13 +839,24 @@ namespace unilateral::masonry
     for (std::size_t k = 0; k < by_class.size(); ++k)
       {
         const std::array<double, dim> &d = classes.directions[k];
-        const PlaneBasis<dim>          basis(d);
-        const dealii::Tensor<1, dim>   n = as_tensor<dim>(d);
-        std::vector<Polygon>           polygon(by_class[k].size());
-        double                         longest = 0;
-        for (std::size_t i = 0; i < by_class[k].size(); ++i)
+        // The class's faces, and the -d faces of the classes near it: two
+        // faces within the tolerance of each other may lie in two classes
+        // (a class is the nearest to its faces, and nearness does not
+        // chain), each within the tolerance of its own.
+        std::vector<ClassFace> members = by_class[k];
+        for (const auto &[j, orientation] :
+             classes.within(d, 3 * direction_tolerance))
+          if (j != k && j < by_class.size())
+            for (const ClassFace &cf : by_class[j])
+              if (cf.plus != (orientation > 0))
+                members.push_back({cf.face, 0, 0, 0, false, true});
+        const PlaneBasis<dim>        basis(d);
+        const dealii::Tensor<1, dim> n = as_tensor<dim>(d);
+        std::vector<Polygon>         polygon(members.size());
+        double                       longest = 0;
+        for (std::size_t i = 0; i < members.size(); ++i)
           {
-            ClassFace             &cf   = by_class[k][i];
+            ClassFace             &cf   = members[i];
             const FaceRecord<dim> &face = faces[cf.face];
             dealii::Point<dim>     centre;
             for (const auto &v : face.vertices)
@@ -856,19 +881,19 @@ namespace unilateral::masonry
           return std::llround(std::floor(offset / (4 * near)));
         };
         std::map<long long, std::vector<std::size_t>> minus;
-        for (std::size_t i = 0; i < by_class[k].size(); ++i)
-          if (!by_class[k][i].plus)
-            minus[bucket_of(by_class[k][i].offset)].push_back(i);
+        for (std::size_t i = 0; i < members.size(); ++i)
+          if (!members[i].plus)
+            minus[bucket_of(members[i].offset)].push_back(i);
         for (auto &[bucket, list] : minus)
           std::sort(list.begin(),
                     list.end(),
                     [&](std::size_t a, std::size_t b) {
-                      return by_class[k][a].lo < by_class[k][b].lo;
+                      return members[a].lo < members[b].lo;
                     });
         std::vector<std::size_t> candidates;
-        for (std::size_t i = 0; i < by_class[k].size(); ++i)
+        for (std::size_t i = 0; i < members.size(); ++i)
           {
-            const ClassFace &p = by_class[k][i];
+            const ClassFace &p = members[i];
             if (!p.plus)
               continue;
             candidates.clear();
@@ -879,24 +904,26 @@ namespace unilateral::masonry
                 const auto list = minus.find(b);
                 if (list == minus.end())
                   continue;
-                auto first =
-                  std::lower_bound(list->second.begin(),
-                                   list->second.end(),
-                                   p.lo - longest - tolerance,
-                                   [&](std::size_t a, double value) {
-                                     return by_class[k][a].lo < value;
-                                   });
+                auto first = std::lower_bound(list->second.begin(),
+                                              list->second.end(),
+                                              p.lo - longest - tolerance,
+                                              [&](std::size_t a, double value) {
+                                                return members[a].lo < value;
+                                              });
                 for (; first != list->second.end() &&
-                       by_class[k][*first].lo <= p.hi + tolerance;
+                       members[*first].lo <= p.hi + tolerance;
                      ++first)
                   candidates.push_back(*first);
               }
             for (auto it = candidates.begin(); it != candidates.end(); ++it)
               {
-                const ClassFace &q        = by_class[k][*it];
+                const ClassFace &q        = members[*it];
                 const double     distance = q.offset - p.offset;
                 if (std::abs(distance) > near ||
                     faces[p.face].block == faces[q.face].block ||
+                    (q.neighbour && !within_tolerance(faces[p.face].normal,
+                                                      -faces[q.face].normal,
+                                                      direction_tolerance)) ||
                     std::min(p.hi, q.hi) - std::max(p.lo, q.lo) <= tolerance)
                   continue;
                 const double overlap =

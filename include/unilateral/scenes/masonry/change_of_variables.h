@@ -109,6 +109,12 @@ namespace unilateral::masonry
     std::pair<unsigned int, double>
     classify(const Direction<dim> &normal);
 
+    /// The classes within @p radius (at most 10 times the tolerance) of
+    /// the class direction @p d, each with +1, or -1 where its direction is
+    /// near -d.
+    std::vector<std::pair<unsigned int, double>>
+    within(const Direction<dim> &d, double radius) const;
+
     /// d of each class.
     std::vector<Direction<dim>> directions;
 
