@@ -276,13 +276,15 @@ namespace unilateral::masonry
   {}
 
   template <int dim>
-  std::pair<int, double>
-  DirectionClasses<dim>::find(const Direction<dim> &d) const
+  template <typename Action>
+  void
+  DirectionClasses<dim>::for_each_near(const Direction<dim> &d,
+                                       const double          radius,
+                                       const Action         &action) const
   {
     // Probe the neighbouring cells of the grid, so that directions within
-    // the tolerance meet whichever side of a cell edge they fall on.
-    int                   nearest  = -1;
-    double                smallest = 0;
+    // the radius (at most the cells' 10 tolerances) meet whichever side of
+    // a cell edge they fall on.
     std::array<long, dim> key;
     for (unsigned int c = 0; c < dim; ++c)
       key[c] = std::lround(d[c] / (10 * tolerance));
@@ -300,17 +302,29 @@ namespace unilateral::masonry
             for (unsigned int c = 0; c < dim; ++c)
               difference =
                 std::max(difference, std::abs(directions[k][c] - d[c]));
-            // The nearest, then the oldest: a pure function of d and the
-            // classes, not of the order of the probes.
-            if (difference <= tolerance &&
-                (nearest < 0 || difference < smallest ||
-                 (difference == smallest && static_cast<int>(k) < nearest)))
-              {
-                nearest  = static_cast<int>(k);
-                smallest = difference;
-              }
+            if (difference <= radius)
+              action(k, difference);
           }
       }
+  }
+
+  template <int dim>
+  std::pair<int, double>
+  DirectionClasses<dim>::find(const Direction<dim> &d) const
+  {
+    // The nearest, then the oldest: a pure function of d and the classes,
+    // not of the order of the probes.
+    int    nearest  = -1;
+    double smallest = 0;
+    for_each_near(
+      d, tolerance, [&](const unsigned int k, const double difference) {
+        if (nearest < 0 || difference < smallest ||
+            (difference == smallest && static_cast<int>(k) < nearest))
+          {
+            nearest  = static_cast<int>(k);
+            smallest = difference;
+          }
+      });
     return {nearest, smallest};
   }
 
@@ -322,28 +336,12 @@ namespace unilateral::masonry
     std::vector<std::pair<unsigned int, double>> result;
     for (const double orientation : {1.0, -1.0})
       {
-        std::array<long, dim> key;
+        Direction<dim> oriented;
         for (unsigned int c = 0; c < dim; ++c)
-          key[c] = std::lround(orientation * d[c] / (10 * tolerance));
-        for (unsigned int probe = 0; probe < (dim == 2 ? 9u : 27u); ++probe)
-          {
-            std::array<long, dim> neighbour = key;
-            for (unsigned int c = 0, p = probe; c < dim; ++c, p /= 3)
-              neighbour[c] += static_cast<long>(p % 3) - 1;
-            const auto found = index.find(neighbour);
-            if (found == index.end())
-              continue;
-            for (const unsigned int k : found->second)
-              {
-                double difference = 0;
-                for (unsigned int c = 0; c < dim; ++c)
-                  difference =
-                    std::max(difference,
-                             std::abs(directions[k][c] - orientation * d[c]));
-                if (difference <= radius)
-                  result.emplace_back(k, orientation);
-              }
-          }
+          oriented[c] = orientation * d[c];
+        for_each_near(oriented, radius, [&](const unsigned int k, double) {
+          result.emplace_back(k, orientation);
+        });
       }
     return result;
   }

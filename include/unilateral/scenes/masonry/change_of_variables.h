@@ -128,6 +128,13 @@ namespace unilateral::masonry
     /// its distance.
     std::pair<int, double>
     find(const Direction<dim> &d) const;
+
+    /// @p action(k, difference) for each class k within @p radius of @p d.
+    template <typename Action>
+    void
+    for_each_near(const Direction<dim> &d,
+                  double                radius,
+                  const Action         &action) const;
   };
 
   /// n . u = 0 at a node (normal displacement zero).
