@@ -150,7 +150,14 @@ namespace unilateral
                           "Write the LCP (lcp_A.mtx, lcp_b.txt, "
                           "lcp_constraints.txt) in the format the lcp scene "
                           "reads, so other tools can solve exactly our "
-                          "problem.");
+                          "problem. The masonry scene's LCP is in the "
+                          "solvers' force unit k (the largest Young's "
+                          "modulus / 4e3) and leaves out the energy e of "
+                          "prescribed displacements: its energy u'Au/2 - "
+                          "b'u times k plus e is the scene's, its "
+                          "multipliers times k the contact forces (k and e: "
+                          "lcp_force_unit and lcp_energy_offset in "
+                          "summary.json).");
         prm.declare_entry("Write solution",
                           "false",
                           dealii::Patterns::Bool(),

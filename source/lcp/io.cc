@@ -97,6 +97,13 @@ namespace unilateral::lcp
       return end == token.c_str() + token.size();
     }
 
+    /// A line quoted in a message, cut after 60 characters.
+    std::string
+    clipped(const std::string &line)
+    {
+      return line.size() <= 60 ? line : line.substr(0, 60) + " ...";
+    }
+
     bool
     parse_index(const std::string &token, long long &value)
     {
@@ -130,6 +137,39 @@ namespace unilateral::lcp
                  (symmetric ? ", or with its mirror: a symmetric file lists "
                               "one triangle only" :
                               ""));
+    }
+
+    /// The size line 'rows columns entries' after the header's comments:
+    /// three whole numbers and nothing else ("3 3 5.9" would otherwise
+    /// read as 5 entries).
+    std::array<long long, 3>
+    read_size_line(std::istream      &in,
+                   const std::string &file_name,
+                   unsigned int      &line_number)
+    {
+      std::string line;
+      while (std::getline(in, line))
+        {
+          ++line_number;
+          if (is_comment_or_blank(line))
+            continue;
+          std::istringstream         size_line(line);
+          std::array<std::string, 3> tokens;
+          std::array<long long, 3>   size{};
+          std::string                extra;
+          if (!(size_line >> tokens[0] >> tokens[1] >> tokens[2]) ||
+              (size_line >> extra) || !parse_index(tokens[0], size[0]) ||
+              !parse_index(tokens[1], size[1]) ||
+              !parse_index(tokens[2], size[2]) || size[0] < 0 || size[1] < 0 ||
+              size[2] < 0)
+            fail(file_name,
+                 line_number,
+                 "expected the size line 'rows columns entries' (three "
+                 "whole numbers), found '" +
+                   clipped(line) + "'");
+          return size;
+        }
+      fail(file_name, line_number, "missing the size line");
     }
   } // namespace
 
@@ -169,22 +209,8 @@ namespace unilateral::lcp
            "symmetry '" + symmetry + "' not supported (general or symmetric)");
     const bool symmetric = (symmetry == "symmetric");
 
-    long long rows = -1, cols = -1, entries = -1;
-    while (std::getline(in, line))
-      {
-        ++line_number;
-        if (is_comment_or_blank(line))
-          continue;
-        std::istringstream size_line(line);
-        if (!(size_line >> rows >> cols >> entries) || rows < 0 || cols < 0 ||
-            entries < 0)
-          fail(file_name,
-               line_number,
-               "expected the size line 'rows columns entries'");
-        break;
-      }
-    if (rows < 0)
-      fail(file_name, line_number, "missing the size line");
+    const auto [rows, cols, entries] =
+      read_size_line(in, file_name, line_number);
     if (rows > std::numeric_limits<Index>::max() ||
         cols > std::numeric_limits<Index>::max() ||
         entries > std::numeric_limits<Index>::max())
@@ -208,13 +234,18 @@ namespace unilateral::lcp
         ++line_number;
         if (is_comment_or_blank(line))
           continue;
+        // Exactly three tokens: a fourth (a complex part, two entries run
+        // together) would otherwise be dropped without a word.
         std::istringstream entry(line);
-        std::string        si, sj, sv;
+        std::string        si, sj, sv, extra;
         long long          i = 0, j = 0;
         double             value = 0;
-        if (!(entry >> si >> sj >> sv) || !parse_index(si, i) ||
-            !parse_index(sj, j) || !parse_number(sv, value))
-          fail(file_name, line_number, "expected 'row column value'");
+        if (!(entry >> si >> sj >> sv) || (entry >> extra) ||
+            !parse_index(si, i) || !parse_index(sj, j) ||
+            !parse_number(sv, value))
+          fail(file_name,
+               line_number,
+               "expected 'row column value', found '" + clipped(line) + "'");
         if (i < 1 || i > rows || j < 1 || j > cols)
           fail(file_name,
                line_number,

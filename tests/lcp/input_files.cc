@@ -120,4 +120,18 @@ main()
   expect_error("a byte-order mark",
                run_lcp("bom", "bom.mtx", "c.txt"),
                {"bom.mtx", "byte-order mark"});
+  // A size line "2 2 3.9" read as 3 entries, and a fourth token on an
+  // entry's line (a complex part) was dropped: both solved with exit 0.
+  write("size_fraction.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n2 2 3.9\n"
+        "1 1 2\n2 1 -1\n2 2 2\n");
+  expect_error("a size line with a fraction",
+               run_lcp("size_fraction", "size_fraction.mtx", "c.txt"),
+               {"size_fraction.mtx:2:", "three whole numbers", "3.9"});
+  write("four_tokens.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n"
+        "1 1 2\n2 1 -1 0.5\n2 2 2\n");
+  expect_error("an entry with a fourth token",
+               run_lcp("four_tokens", "four_tokens.mtx", "c.txt"),
+               {"four_tokens.mtx:4:", "'2 1 -1 0.5'"});
 }

@@ -10,6 +10,7 @@
 //     against the exact column solution (laminae, gap 0, P2) and for a
 //     settling running bond with two materials (Q2).
 #include <unilateral/application.h>
+#include <unilateral/lcp/io.h>
 
 #include <array>
 #include <cmath>
@@ -296,15 +297,19 @@ main()
                          "    set Prescribed displacement = " +
                          shift + "; 0\n  end\n");
     };
-    const auto energy = [](const std::string &name) {
+    const auto number = [](const std::string &name, const std::string &key) {
       std::ifstream     in("results/" + name + "/summary.json");
       std::stringstream text;
       text << in.rdbuf();
-      const std::string json = text.str();
-      const std::size_t at   = json.find("\"energy\": ");
+      const std::string json  = text.str();
+      const std::string label = "\"" + key + "\": ";
+      const std::size_t at    = json.find(label);
       return at == std::string::npos ?
                std::nan("") :
-               std::strtod(json.c_str() + at + 10, nullptr);
+               std::strtod(json.c_str() + at + label.size(), nullptr);
+    };
+    const auto energy = [&number](const std::string &name) {
+      return number(name, "energy");
     };
     // The share's rounding, which the program bounds by epsilon times its
     // terms, grows as s^2: 6.4e-11 of the energy at s = 1, 2.6e-10 at 2,
@@ -326,6 +331,39 @@ main()
               << ", to that of s = 10 to 1e-8: "
               << (std::abs(e_1 - e_10) <= 1e-8 * std::abs(e_10) ? "yes" : "no")
               << "\n";
+    // The exported LCP is in the solvers' force unit k (here E = 4e4:
+    // k = 10) and leaves out the prescribed displacements' share e: its
+    // energy times k plus e must be the scene's (summary.json names both).
+    {
+      const std::string name = "shift_exported";
+      const std::string text = shifted("1") +
+                               "subsection Masonry\n  subsection Materials\n"
+                               "    set Young's modulus = 4e4\n  end\nend\n"
+                               "subsection Output\n  set Export LCP = true\n"
+                               "  set Write solution = true\nend\n";
+      const int                      code      = run(name, text, error);
+      const std::string              directory = "results/" + name + "/";
+      const unilateral::lcp::Problem lcp =
+        unilateral::lcp::read_problem(directory + "lcp_A.mtx",
+                                      directory + "lcp_b.txt",
+                                      directory + "lcp_constraints.txt");
+      const unilateral::lcp::Vector u =
+        unilateral::lcp::read_vector(directory + "u.txt");
+      const double lcp_energy = 0.5 * u.dot(lcp.A * u) - lcp.b.dot(u);
+      const double unit       = number(name, "lcp_force_unit");
+      const double offset     = number(name, "lcp_energy_offset");
+      const double scene      = number(name, "energy");
+      std::cout << "  exported LCP (E = 4e4): exit code " << code
+                << "; lcp_force_unit " << unit
+                << ", lcp_energy_offset nonzero: "
+                << (offset != 0 ? "yes" : "no")
+                << "; unit * LCP energy + offset = scene energy to 1e-12: "
+                << (std::abs(unit * lcp_energy + offset - scene) <=
+                        1e-12 * std::abs(scene) ?
+                      "yes" :
+                      "no")
+                << "\n";
+    }
     const int code_1e6 = run("shift_1e6", shifted("1e6"), error);
     std::cout << "  s = 1e6: exit code 2: " << (code_1e6 == 2 ? "yes" : "no")
               << "; stderr says 'the energy is resolved only to': "

@@ -725,7 +725,11 @@ namespace unilateral::masonry
       .set("n_inclined_joint", s.n_inclined_joint)
       .set("max_displacement", max_displacement)
       .set("n_closed_contacts", n_closed_contacts)
-      .set("n_degenerate_contacts", n_degenerate_contacts);
+      .set("n_degenerate_contacts", n_degenerate_contacts)
+      // What relates the exported LCP (Output/Export LCP) to the numbers
+      // above: energy = lcp_force_unit * (u'Au/2 - b'u) + lcp_energy_offset.
+      .set("lcp_force_unit", unit)
+      .set("lcp_energy_offset", energy_offset);
     // The coarse-mesh start, as the plate's: [] when the run had none.
     std::vector<JsonObject> coarse_levels;
     if (coarse_start.n_unknowns > 0)
