@@ -2,6 +2,7 @@
 #include <unilateral/base/text.h>
 #include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/masonry/assembly.h>
+#include <unilateral/scenes/masonry/free_motions.h>
 #include <unilateral/scenes/masonry/mesh.h>
 #include <unilateral/scenes/masonry/mesh_file.h>
 #include <unilateral/scenes/masonry/tearing.h>
@@ -294,6 +295,9 @@ namespace unilateral::masonry
                     " unknowns, n_c = " +
                     std::to_string(problem_sizes.n_constraints) +
                     " constraints");
+    free_motions = free_rigid_motions(contacts);
+    for (const std::string &line : free_motions)
+      context.stage(registered_name, "note: " + line);
   }
 
   template <int dim>
@@ -692,6 +696,12 @@ namespace unilateral::masonry
              "closed or open by its path): where such "
              "contacts alone hold a block, other displacements with the same "
              "energy and contact forces solve the problem too\n";
+    if (report.converged())
+      for (const std::string &line : free_motions)
+        out << "  note: " << line
+            << ": the displacements are determined only up to such a motion "
+               "(the loads do no work along it); a support that holds it "
+               "('Normal displacement zero', 'Fixed') makes them unique\n";
     if (report.converged() &&
         std::max(balance.force_imbalance, balance.moment_imbalance) > 1e-8)
       out << std::setprecision(1) << "  warning: the supports' reactions "
@@ -706,10 +716,11 @@ namespace unilateral::masonry
   MasonryScene<dim>::add_summary(JsonObject &summary) const
   {
     const Sizes &s = problem_sizes;
-    summary.set("geometry", structure_name())
-      .set("dimension", dim)
-      .set("m", parameters.geometry.m)
-      .set("n_blocks", s.n_blocks)
+    summary.set("geometry", structure_name()).set("dimension", dim);
+    // 'Blocks per side' means nothing to a mesh file's structure.
+    if (!parameters.geometry.from_mesh_file)
+      summary.set("m", parameters.geometry.m);
+    summary.set("n_blocks", s.n_blocks)
       .set("refinement", parameters.geometry.refinement)
       .set("element", to_string(state->discretisation.element))
       .set("block_height", s.block_height)
@@ -730,6 +741,10 @@ namespace unilateral::masonry
       // above: energy = lcp_force_unit * (u'Au/2 - b'u) + lcp_energy_offset.
       .set("lcp_force_unit", unit)
       .set("lcp_energy_offset", energy_offset);
+    std::vector<JsonObject> motions(free_motions.size());
+    for (std::size_t i = 0; i < free_motions.size(); ++i)
+      motions[i].set("description", free_motions[i]);
+    summary.set("free_rigid_motions", motions);
     // The coarse-mesh start, as the plate's: [] when the run had none.
     std::vector<JsonObject> coarse_levels;
     if (coarse_start.n_unknowns > 0)
@@ -792,29 +807,16 @@ namespace unilateral::masonry
     if (state)
       for (const std::string &support : state->contacts.supports_acting_nowhere)
         unused += "; " + support + " acts on no node";
-    // A block with no joint and no support floats whatever the loads: the
-    // likeliest cause in a mesh file is two faces that nearly touch but do
-    // not coincide (joints are made only between coinciding faces).
-    if (state && !state->contacts.node_block.empty())
-      {
-        const ContactSet<dim> &contacts = state->contacts;
-        std::vector<char> held(*std::max_element(contacts.node_block.begin(),
-                                                 contacts.node_block.end()) +
-                                 1,
-                               0);
-        for (const auto &pair : contacts.blocks)
-          held[pair[0]] = held[pair[1]] = 1;
-        for (const auto &node : contacts.held)
-          held[contacts.node_block[node.node]] = 1;
-        for (const auto &roller : contacts.rollers)
-          held[contacts.node_block[roller.node]] = 1;
-        const auto loose = std::find(held.begin(), held.end(), 0);
-        if (loose != held.end())
-          unused += "; block " + std::to_string(loose - held.begin()) +
-                    " has no joint and no support (joints are made only "
-                    "where faces of two blocks coincide, to 'Masonry/"
-                    "Coincidence tolerance' of the smallest cell)";
-      }
+    // Blocks that a rigid motion moves past every support float, unless
+    // the loads do no work along it. A block held by nothing is, in a mesh
+    // file, most likely two faces that nearly touch but do not coincide.
+    for (const std::string &line : free_motions)
+      unused += "; " + line +
+                (line.find("held by no support") != std::string::npos ?
+                   " (joints are made only where faces of two blocks "
+                   "coincide, to 'Masonry/Coincidence tolerance' of the "
+                   "smallest cell)" :
+                   "");
     if (report.status == lcp::Status::infeasible)
       return structure +
              " has no equilibrium: its supports and joints cannot "

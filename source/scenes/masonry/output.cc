@@ -24,7 +24,8 @@ namespace unilateral::masonry
      * Stress from the displacement gradient, cell by cell with the cell's
      * material: the tensor sigma = lambda tr(eps) I + 2 mu eps (in 2D plane
      * strain, whose sigma_zz = lambda tr(eps) enters the von Mises stress)
-     * and the von Mises stress.
+     * and the von Mises stress; in 2D also sigma_zz, which the tensor (in
+     * the plane: ParaView pads it to 3 x 3 with zeros) cannot hold.
      */
     template <int dim>
     class StressPostprocessor : public dealii::DataPostprocessor<dim>
@@ -71,6 +72,8 @@ namespace unilateral::masonry
               for (unsigned int j = 0; j < dim; ++j)
                 out[i * dim + j] = sigma[i][j];
             out[dim * dim] = von_mises;
+            if (dim == 2)
+              out[dim * dim + 1] = sigma[2][2];
           }
       }
 
@@ -79,6 +82,8 @@ namespace unilateral::masonry
       {
         std::vector<std::string> names(dim * dim, "stress");
         names.push_back("von_mises");
+        if (dim == 2)
+          names.push_back("stress_zz");
         return names;
       }
 
@@ -90,6 +95,8 @@ namespace unilateral::masonry
         std::vector<DataComponentInterpretation> interpretation(
           dim * dim, component_is_part_of_tensor);
         interpretation.push_back(component_is_scalar);
+        if (dim == 2)
+          interpretation.push_back(component_is_scalar);
         return interpretation;
       }
 
@@ -137,6 +144,82 @@ namespace unilateral::masonry
     };
     DirectionClasses<dim>                                 classes;
     std::map<std::pair<unsigned int, unsigned int>, Load> at;
+    /*
+     * A corner of a quadratic triangle (P2 faces in 3D) has int phi = 0
+     * over its face: its force says nothing of the pressure there (it is
+     * zero for a uniform one), and force / weight would be round-off over
+     * round-off. Such a node takes the mean pressure, in its direction, of
+     * the nodes with a weight that share a cell with it: the neighbouring
+     * edge midpoints of its contact faces (exact for a uniform pressure,
+     * like the rest); 0 if it is open.
+     */
+    const auto pressures_without_weight = [&](const auto &loads) {
+      double largest = 0;
+      for (const auto &entry : loads)
+        largest = std::max(largest, std::abs(entry.second.weight));
+      const auto weightless = [&](const Load &load) {
+        return !(std::abs(load.weight) > 1e-10 * largest);
+      };
+      // Only nodes on the plane of the contact face through a: a cell may
+      // also touch another contact of the same direction (a block's top
+      // and bottom joints, one cell apart).
+      const auto in_plane = [&](const unsigned int a,
+                                const unsigned int b,
+                                const unsigned int klass) {
+        const auto &d     = classes.directions[klass];
+        double      along = 0, distance = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const double step =
+              contacts.node_position[b][c] - contacts.node_position[a][c];
+            along += d[c] * step;
+            distance += step * step;
+          }
+        return std::abs(along) <= 1e-6 * std::sqrt(distance);
+      };
+      std::map<std::pair<unsigned int, unsigned int>, std::pair<double, int>>
+        sums;
+      for (const auto &[key, load] : loads)
+        if (weightless(load))
+          sums[key] = {0.0, 0};
+      if (!sums.empty())
+        {
+          const auto &fe = *state->discretisation.fe;
+          std::vector<dealii::types::global_dof_index> dofs(
+            fe.n_dofs_per_cell());
+          std::vector<unsigned int> cell_nodes;
+          for (const auto &cell :
+               state->discretisation.dof_handler.active_cell_iterators())
+            {
+              cell->get_dof_indices(dofs);
+              cell_nodes.clear();
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                if (fe.system_to_component_index(i).first == 0)
+                  cell_nodes.push_back(contacts.node_of_dof[dofs[i]]);
+              for (const unsigned int a : cell_nodes)
+                for (auto it = sums.lower_bound({a, 0u});
+                     it != sums.end() && it->first.first == a;
+                     ++it)
+                  for (const unsigned int b : cell_nodes)
+                    {
+                      const auto other = loads.find({b, it->first.second});
+                      if (other != loads.end() && !weightless(other->second) &&
+                          in_plane(a, b, it->first.second))
+                        {
+                          it->second.first +=
+                            other->second.force / other->second.weight;
+                          ++it->second.second;
+                        }
+                    }
+            }
+        }
+      std::map<std::pair<unsigned int, unsigned int>, double> result;
+      // An open contact carries no pressure, whatever its neighbours do.
+      for (const auto &[key, sum] : sums)
+        result[key] =
+          sum.second > 0 && loads.at(key).active ? sum.first / sum.second : 0.0;
+      return result;
+    };
     for (std::size_t k = 0; k < constraints.size(); ++k)
       {
         const auto        &c     = contacts.constraints[k];
@@ -152,14 +235,18 @@ namespace unilateral::masonry
             load.active = load.active || constraints[k].active;
           }
       }
+    const auto          borrowed = pressures_without_weight(at);
     std::vector<double> pressure(n_nodes, 0.0), gap(n_nodes, 0.0),
       active(n_nodes, 0.0);
     std::vector<char> any(n_nodes, 0);
     for (const auto &[key, load] : at)
       {
-        const unsigned int node = key.first;
-        const double       p = load.weight > 0 ? load.force / load.weight : 0.0;
-        pressure[node]       = any[node] ? std::max(pressure[node], p) : p;
+        const unsigned int node   = key.first;
+        const auto         borrow = borrowed.find(key);
+        const double       p      = borrow != borrowed.end() ? borrow->second :
+                                    std::abs(load.weight) > 0 ? load.force / load.weight :
+                                                                0.0;
+        pressure[node]            = any[node] ? std::max(pressure[node], p) : p;
         gap[node]    = any[node] ? std::min(gap[node], load.gap) : load.gap;
         active[node] = active[node] > 0 || load.active ? 1.0 : 0.0;
         any[node]    = 1;

@@ -288,6 +288,9 @@ namespace unilateral::masonry
     unsigned int n_closed_contacts      = 0;
     /// Closed without force (see postprocess).
     unsigned int n_degenerate_contacts = 0;
+    /// The groups of blocks that some rigid motion moves past every support
+    /// (free_rigid_motions), one line each.
+    std::vector<std::string> free_motions;
   };
 
   /// The scene of the parameter file: MasonryScene<2> or <3> by

@@ -1,0 +1,96 @@
+// Rigid motions that no support resists (masonry/free_motions.h): a wall
+// without its side rollers converged (exit 0) with the horizontal position
+// of the whole wall left to round-off, saying only that some contacts were
+// degenerate; pushed sideways it ended "no equilibrium, or a block can
+// move freely" without saying which block or how. Now the note names the
+// group of blocks and its free motions, computed from the supports alone:
+//  - stack bond without rollers: the whole wall translates along x;
+//  - held at one base node only (a roller): translation along x and a
+//    rotation about a point on the vertical through that node (x = 0);
+//  - the 3D wall without its front roller: translation along z;
+//  - the shipped walls with all their supports: no note;
+//  - pushed sideways: exit 2, and the error names the translation.
+#include "../application_test_tools.h"
+
+using namespace application_test;
+
+namespace
+{
+  std::string
+  wall(const std::string &supports,
+       const std::string &traction  = "0; 0",
+       const std::string &extra     = "",
+       const std::string &signorini = "base where x < s")
+  {
+    return "set Scene = masonry\n"
+           "subsection Output\n  set Directory = results\n"
+           "  set Print timings = false\n  set Progress = false\n"
+           "  set Write VTU = false\nend\n"
+           "subsection Masonry\n  set Geometry = stack bond\n"
+           "  set Blocks per side = 3\n" +
+           extra +
+           "  subsection Boundary conditions\n"
+           "    set Normal displacement zero = " +
+           supports + "\n    set Signorini = " + signorini +
+           "\n"
+           "    set Traction boundaries = top\n"
+           "    set Traction = " +
+           traction + "\n  end\nend\n";
+  }
+
+  void
+  report(const std::string &what, const Result &result)
+  {
+    std::cout << what << ": exit code " << result.code << "\n";
+    std::size_t at = 0;
+    while ((at = result.out.find("note: the", at)) != std::string::npos)
+      {
+        const std::size_t end = result.out.find('\n', at);
+        std::cout << "  " << result.out.substr(at, end - at) << "\n";
+        at = end;
+      }
+    // Up to the solver's own words, which follow in brackets.
+    const std::size_t named = result.err.find("; the whole structure");
+    const std::size_t end   = result.err.find(") (", named);
+    if (named != std::string::npos && end != std::string::npos)
+      std::cout << "  error names it: "
+                << result.err.substr(named + 2, end + 1 - named - 2) << "\n";
+  }
+} // namespace
+
+int
+main()
+{
+  write("slide.prm", wall("base where x > s"));
+  report("stack bond m = 3 without side rollers", run({"slide.prm"}));
+  const std::string summary = read("results/slide/summary.json");
+  const std::size_t key     = summary.find("\"free_rigid_motions\"");
+  const std::size_t line =
+    summary.find("\"the whole structure (9 blocks) can move freely by "
+                 "translation along (1, 0)\"");
+  std::cout << "  summary.json lists it: "
+            << yes_no(key != std::string::npos && line != std::string::npos &&
+                      key < line)
+            << "\n";
+
+  write("pivot.prm", wall("base where x < 0.1", "0; 0", "", ""));
+  report("held by one roller at (0, 0)", run({"pivot.prm"}));
+
+  write("push.prm", wall("base where x > s", "0.001; 0"));
+  report("without side rollers, pushed along x", run({"push.prm"}));
+
+  write("held.prm", wall("left, right, base where x > s"));
+  report("with its rollers", run({"held.prm"}));
+
+  // The 3D wall of prm/masonry_wall_3d.prm, without and with its front
+  // roller.
+  const std::string three_d = "  set Dimension = 3\n"
+                              "  set Blocks through the thickness = 2\n"
+                              "  set Thickness = 2\n";
+  write("no_front.prm",
+        wall("left, right, base where x > s", "0; 0; 0", three_d));
+  report("3D wall without its front roller", run({"no_front.prm"}));
+  write("front.prm",
+        wall("left, right, front, base where x > s", "0; 0; 0", three_d));
+  report("3D wall with it", run({"front.prm"}));
+}
