@@ -157,7 +157,9 @@ namespace unilateral
                           "b'u times k plus e is the scene's, its "
                           "multipliers times k the contact forces (k and e: "
                           "lcp_force_unit and lcp_energy_offset in "
-                          "summary.json).");
+                          "summary.json). So is the plate's where its bending "
+                          "rigidity is over 1e3 times from the paper's steel "
+                          "plate's (lcp_force_unit; no offset).");
         prm.declare_entry("Write solution",
                           "false",
                           dealii::Patterns::Bool(),

@@ -63,6 +63,13 @@ main()
      "subsection Geometry\n  set Length x = -100\nend\n",
      "Plate/Geometry/Length x",
      "= -100"},
+    // Solver parameters, written after an empty Plate subsection: a
+    // correction reduction of 1e-300 underflowed and TNNMG went NaN.
+    {"tnnmg_reduction",
+     "end\nsubsection Solver\n  subsection TNNMG\n"
+     "    set Correction reduction = 1e-300\n  end\n",
+     "Solver/TNNMG/Correction reduction",
+     "= 1e-300"},
     {"no_elements",
      "subsection Geometry\n  set Elements x = 0\nend\n",
      "Plate/Geometry/Elements x",

@@ -76,11 +76,28 @@ namespace unilateral::lcp
       void
       check(const std::string &section) const override
       {
-        check_parameter(
-          penalty > 0, section, "Penalty", penalty, "must be > 0");
-        check_parameter(
-          precision > 0, section, "Inner precision", precision, "must be > 0");
-        check_parameter(eta > 0, section, "Eta", eta, "must be > 0");
+        // Beyond these the iteration drowns in round-off or overflows,
+        // and the breakdown would read as a wall without equilibrium.
+        check_parameter(penalty > 0 && penalty <= 1e8,
+                        section,
+                        "Penalty",
+                        penalty,
+                        "must be in (0, 1e8]");
+        check_parameter(penalty_growth <= 1e3,
+                        section,
+                        "Penalty growth",
+                        penalty_growth,
+                        "must be in [1, 1e3]");
+        check_parameter(precision >= 1e-14 && precision <= 1e8,
+                        section,
+                        "Inner precision",
+                        precision,
+                        "must be in [1e-14, 1e8]");
+        check_parameter(eta >= 1e-14 && eta <= 1,
+                        section,
+                        "Eta",
+                        eta,
+                        "must be in [1e-14, 1]");
         check_parameter(step_length > 0,
                         section,
                         "Step length",
@@ -147,10 +164,11 @@ namespace unilateral::lcp
       prm.add_parameter("Maximum outer iterations",
                         max_outer,
                         "SMALBE's iterations (updates of the equality "
-                        "multiplier); 'Maximum iterations' bounds the "
-                        "products with F in MPRGP's steps (besides them, "
-                        "the estimate of ||P F P|| takes 30 and each outer "
-                        "iteration one or two).",
+                        "multiplier); 'Maximum iterations' bounds MPRGP's "
+                        "steps, each one product with F, two for an "
+                        "expansion, three for an adaptive one (besides "
+                        "them, the estimate of ||P F P|| takes 30 and each "
+                        "outer iteration one or two).",
                         Integer(1));
     }
 
@@ -220,6 +238,7 @@ namespace unilateral::lcp
         , norm_pfp(largest_eigenvalue(dual))
         , rho(options.penalty * norm_pfp)
         , M(options.precision * norm_pfp)
+        , initial_rho(rho)
         , q(Vector::Zero(dual.n_multipliers()))
       {}
 
@@ -228,10 +247,12 @@ namespace unilateral::lcp
         converged,
         outer_limit,
         product_limit,
-        broke_down
+        broke_down,
+        infeasible
       };
 
-      /// The outer loop, within @p max_products products with F.
+      /// The outer loop; MPRGP may take as many steps as @p max_products
+      /// less the products with F used so far.
       Outcome
       run(unsigned int max_products, std::ostream *progress);
 
@@ -254,6 +275,23 @@ namespace unilateral::lcp
       const TfetiParameters &options;
       const double           norm_pfp;
       double                 rho, M;
+      /// rho at the start.
+      const double initial_rho;
+
+      /**
+       * No equilibrium: where no compressive contact forces balance every
+       * block (G l = e has no solution with l_I >= 0), the violation of
+       * G l = e stalls and rho doubles at every outer iteration, without
+       * end (the iterate then runs off to 1e29 while its residuals look
+       * fine). Declared once rho has grown twenty times over its start
+       * and to 1e12 ||P F P||: a wall in equilibrium converged long
+       * before (8-17 outer iterations, benchmarks/tfeti/README.md).
+       */
+      bool
+      no_equilibrium() const
+      {
+        return rho >= 1048576.0 * initial_rho && rho >= 1e12 * norm_pfp;
+      }
       /// The equality multiplier, as G^T mu.
       Vector q;
     };
@@ -338,6 +376,8 @@ namespace unilateral::lcp
           if (violation > 0.5 * previous_violation)
             rho *= options.penalty_growth;
           previous_violation = violation;
+          if (no_equilibrium())
+            return Outcome::infeasible;
         }
       return Outcome::outer_limit;
     }
@@ -363,7 +403,7 @@ namespace unilateral::lcp
                                   "and MPRGP; needs a scene that tears its problem "
                                   "(masonry)";
         info.subsection         = "TFETI";
-        info.default_iterations = "100000 products with F";
+        info.default_iterations = "100000 MPRGP steps";
         info.exact              = false;
         info.needs_tearing      = true;
         info.gives_active_set   = true;
@@ -444,6 +484,13 @@ namespace unilateral::lcp
             report.status  = Status::singular;
             report.message = "TFETI: the dual's inner solve (MPRGP) broke "
                              "down: P F P + rho Q is not positive definite";
+            return;
+          case Smalbe::Outcome::infeasible:
+            report.status = Status::infeasible;
+            report.message =
+              "TFETI: no compressive contact forces balance every block "
+              "(the violation of G l = e stalled while SMALBE's penalty grew "
+              "to 1e12 times ||P F P||)";
             return;
           case Smalbe::Outcome::outer_limit:
           case Smalbe::Outcome::product_limit:

@@ -82,7 +82,7 @@ namespace unilateral::lcp
         prm.add_parameter(
           "Correction reduction",
           reduction,
-          "The factor in (0, 1) by which conjugate gradients reduce the "
+          "The factor in [1e-14, 1) by which conjugate gradients reduce the "
           "residual of the free unknowns in each correction.",
           Double(0, 1));
         prm.add_parameter("Cycles per correction",
@@ -122,11 +122,13 @@ namespace unilateral::lcp
       void
       check(const std::string &section) const override
       {
-        check_parameter(reduction > 0 && reduction < 1,
+        // Below 1e-14 the residual CG aims at is round-off (at 1e-300 it
+        // underflowed, and the corrections came back NaN).
+        check_parameter(reduction >= 1e-14 && reduction < 1,
                         section,
                         "Correction reduction",
                         reduction,
-                        "must be in (0, 1)");
+                        "must be in [1e-14, 1)");
       }
     };
 
@@ -153,6 +155,18 @@ namespace unilateral::lcp
       Index        held      = 0;
       bool         converged = false;
     };
+
+    /// What went wrong where the iterate is no longer finite on @p level.
+    std::string
+    broke_down(const unsigned int level)
+    {
+      return "TNNMG's iterate became NaN or infinite on level " +
+             std::to_string(level) +
+             " of the hierarchy (as with 'Solver/TNNMG/Cycles per "
+             "correction' in the hundreds, or on elements thousands of times "
+             "longer than wide): use 'Solver/Method = pdas', or TNNMG's "
+             "default parameters";
+    }
 
     class Tnnmg : public Solver
     {
@@ -533,6 +547,18 @@ namespace unilateral::lcp
                                                  options.coarse_tolerance,
                             level > first);
           coarse_lcp = std::move(lcp);
+          if (!std::all_of(u.begin(), u.end(), [](const double x) {
+                return std::isfinite(x);
+              }))
+            {
+              // The finer levels would only carry the NaN along.
+              solution.u =
+                Vector::Constant(problem.size(),
+                                 std::numeric_limits<double>::quiet_NaN());
+              report.status  = Status::singular;
+              report.message = broke_down(level);
+              return;
+            }
           report.counters.cg_iterations += outcome.cycles;
           report.counters.matrix_vector_products += outcome.products;
           if (progress != nullptr)
@@ -566,7 +592,7 @@ namespace unilateral::lcp
       if (!solution.u.allFinite())
         {
           report.status  = Status::singular;
-          report.message = "TNNMG broke down (non-finite iterate)";
+          report.message = broke_down(finest);
         }
       else if (outcome.converged)
         report.status = Status::converged;
@@ -576,9 +602,9 @@ namespace unilateral::lcp
           report.message =
             "TNNMG did not reach 'Tolerance' within " +
             std::to_string(iteration_limit(100)) +
-            " iterations on the finest level (as on elements several times "
-            "longer than wide, where its block smoother is slow): raise "
-            "'Solver/Maximum iterations', or use 'Solver/Method = pdas'";
+            " iterations on the finest level: raise 'Solver/Maximum "
+            "iterations', or use 'Solver/Method = pdas' (its block smoother "
+            "is slow on elements several times longer than wide)";
         }
     }
   } // namespace

@@ -199,7 +199,7 @@ namespace unilateral::plate
       for (std::size_t k = 0; k < bound_vertex.size(); ++k)
         {
           const lcp::Index i                 = lcp_problem.constrained[k];
-          force_at_vertex[bound_vertex[k]]   = lcp_solution.lambda[i];
+          force_at_vertex[bound_vertex[k]]   = lcp_solution.lambda[i] * unit;
           contact_at_vertex[bound_vertex[k]] = active[i];
         }
     }

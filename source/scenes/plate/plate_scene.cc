@@ -181,6 +181,23 @@ namespace unilateral::plate
                             parameters.load.name,
                           lcp_problem.A,
                           lcp_problem.b);
+    // The solvers' force unit. PDAS's tau weighs a deflection against a
+    // force, and other methods' tolerances are absolute: a plate far
+    // stiffer or softer than the paper's (a 1e-4 mm sheet with its load
+    // scaled alike, the same deflections) handed them numbers 1e13 apart
+    // and three methods failed where one converged. Within a factor 1e3 of
+    // the paper's steel plate nothing is scaled (its tables stay as they
+    // were); beyond, A and b are divided by D / D_steel, so that the
+    // solvers see the steel plate's numbers. Energies and contact forces
+    // are reported in the parameter file's units.
+    constexpr double paper_rigidity = 15190.972222222221; // steel, 2 mm
+    const double     ratio          = rigidity / paper_rigidity;
+    unit                            = ratio > 1e3 || ratio < 1e-3 ? ratio : 1.0;
+    if (unit != 1)
+      {
+        lcp_problem.A /= unit;
+        lcp_problem.b /= unit;
+      }
     // The bending stiffness with the clamped DOFs eliminated.
     lcp_problem.known_semidefinite = true;
     // Clamped on every side (or all but the twist): no rigid motion.
@@ -200,6 +217,8 @@ namespace unilateral::plate
   void
   PlateScene::postprocess(const RunContext &, lcp::Report &report)
   {
+    report.energy *= unit;
+    report.regularisation *= unit;
     dof_values.reinit(dof_handler.n_dofs());
     for (lcp::Index k = 0; k < free_dofs.size(); ++k)
       dof_values[free_dofs.dof[k]] = lcp_solution.u[k];
@@ -221,10 +240,15 @@ namespace unilateral::plate
       {
         const auto coefficients =
           cell_coefficients(cell, bfs_index, dof_values);
+        // NaN wins: std::min would drop it and show a broken answer's
+        // minimum as a number.
         for (unsigned int v = 0; v < 4; ++v)
-          plate_results.min_deflection =
-            std::min(plate_results.min_deflection,
-                     coefficients[fe::BognerFoxSchmit::local_index(v, 0)]);
+          {
+            const double w =
+              coefficients[fe::BognerFoxSchmit::local_index(v, 0)];
+            if (std::isnan(w) || w < plate_results.min_deflection)
+              plate_results.min_deflection = w;
+          }
         const fe::BognerFoxSchmit element = cell_element(cell);
         const dealii::Point<2>    upper   = element.vertex(3);
         if (!centre_found && element.vertex(0)[0] <= centre[0] &&
@@ -295,6 +319,7 @@ namespace unilateral::plate
       .set("length_x", parameters.geometry.length_x)
       .set("length_y", parameters.geometry.length_y)
       .set("thickness", parameters.geometry.thickness)
+      .set("lcp_force_unit", unit)
       .set("boundary_condition",
            parameters.geometry.clamp_twist ? "fully clamped" : "clamped")
       .set("material", parameters.material.name)
@@ -319,18 +344,30 @@ namespace unilateral::plate
   std::string
   PlateScene::failure_description(const lcp::Report &report) const
   {
-    // Only a factorisation's verdict (PDAS's "... is singular for the
-    // active set"), not a method's numerical breakdown, which the status
-    // names alike.
-    if (report.status != lcp::Status::singular ||
-        report.message.find("is singular") == std::string::npos)
-      return Scene::failure_description(report);
     // Elements far from square scale the unknowns apart by their own
     // ratio, whatever the units.
     const Geometry &g      = parameters.geometry;
     const double    h_x    = g.length_x / g.n_x;
     const double    h_y    = g.length_y / g.n_y;
     const double    aspect = std::max(h_x / h_y, h_y / h_x);
+    // A multigrid iterate gone NaN on such elements: their shape first.
+    if (report.status == lcp::Status::singular && aspect > 100 &&
+        report.message.find("NaN or infinite") != std::string::npos)
+      {
+        std::ostringstream message;
+        message << std::setprecision(3) << "the elements are " << aspect
+                << " times longer than wide (" << h_x << " x " << h_y
+                << "): choose 'Plate/Geometry/Elements x' and 'Elements y' "
+                   "so that they are nearer square ("
+                << report.message << ")";
+        return message.str();
+      }
+    // Only a factorisation's verdict (PDAS's "... is singular for the
+    // active set"), not a method's numerical breakdown, which the status
+    // names alike.
+    if (report.status != lcp::Status::singular ||
+        report.message.find("is singular") == std::string::npos)
+      return Scene::failure_description(report);
     if (aspect > 100)
       {
         std::ostringstream message;

@@ -191,8 +191,11 @@ namespace unilateral::plate
     std::shared_ptr<const lcp::Hierarchy>
     make_hierarchy() const;
 
-    Parameters                                   parameters;
-    double                                       rigidity;
+    Parameters parameters;
+    double     rigidity;
+    /// The force unit of the LCP handed to the solvers (see
+    /// assemble_system): 1 within a factor 1e3 of the paper's steel plate.
+    double                                       unit = 1;
     std::unique_ptr<dealii::Function<2, double>> obstacle; ///< null: none
     std::unique_ptr<dealii::Function<2, double>> force;
 
