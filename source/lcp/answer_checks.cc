@@ -128,6 +128,11 @@ namespace unilateral::lcp
     for (const double value : solution.u)
       if (std::isfinite(value))
         largest_u = std::max(largest_u, std::abs(value));
+    // The bounds too: an obstacle or a gap of 1e300 overflows as well.
+    double largest_bound = 0;
+    for (const double bound : problem.lower_bound)
+      if (std::isfinite(bound))
+        largest_bound = std::max(largest_bound, std::abs(bound));
     std::ostringstream message;
     message << std::setprecision(3)
             << "the answer is not a finite number (NaN or infinity in " << what
@@ -135,8 +140,9 @@ namespace unilateral::lcp
             << problem.b.lpNorm<Eigen::Infinity>()
             << " with a stiffness (mean diagonal of A) of "
             << (problem.size() > 0 ? problem.A.diagonal().mean() : 0.0)
-            << " are beyond double precision; give the loads and the "
-               "stiffness in units closer to each other";
+            << " and bounds (obstacle, gaps) up to " << largest_bound
+            << " are beyond double precision; give the loads, the bounds and "
+               "the stiffness in units closer to each other";
     downgrade(report, message.str());
   }
 

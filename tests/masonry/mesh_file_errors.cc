@@ -221,8 +221,7 @@ main()
     const Result result = run({"loose.prm"});
     std::cout << "a block with no joint and no support: exit code "
               << result.code << ", named: "
-              << (result.err.find("in block 1 is held by no support") !=
-                      std::string::npos ?
+              << (result.err.find("block 1 (a node at") != std::string::npos ?
                     "yes" :
                     "no")
               << "\n";

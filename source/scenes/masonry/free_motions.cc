@@ -57,7 +57,8 @@ namespace unilateral::masonry
     point_text(const std::array<double, dim> &p)
     {
       std::ostringstream text;
-      text.precision(4);
+      // Enough digits for a point of a structure far from the origin.
+      text.precision(8);
       text << "(";
       for (unsigned int c = 0; c < dim; ++c)
         text << (c > 0 ? ", " : "") << (std::abs(p[c]) < 1e-12 ? 0.0 : p[c]);
@@ -263,13 +264,17 @@ namespace unilateral::masonry
             describe_motion<dim>(v, g.centre, std::max(g.size, 1e-300)));
         if (motions.empty())
           continue;
-        std::string who =
+        const unsigned int first_block = contacts.node_block[g.first_node];
+        const std::string  where =
+          " (a node at " +
+          point_text<dim>(contacts.node_position[g.first_node]) + ")";
+        const std::string who =
           g.blocks.size() == n_blocks ?
             "the whole structure (" + quantity(n_blocks, "block") + ")" :
-            (g.blocks.size() == 1 ? "the block" :
-                                    "the " + std::to_string(g.blocks.size()) +
-                                      " blocks joined to the block") +
-              " with the node " + contacts.describe_node(g.first_node);
+          g.blocks.size() == 1 ?
+            "block " + std::to_string(first_block) + where :
+            "the " + std::to_string(g.blocks.size()) +
+              " blocks joined to block " + std::to_string(first_block) + where;
         if (motions.size() == n_rigid_motions(dim))
           result.push_back(who + " is held by no support");
         else
