@@ -93,4 +93,46 @@ main()
   write("front.prm",
         wall("left, right, front, base where x > s", "0; 0; 0", three_d));
   report("3D wall with it", run({"front.prm"}));
+
+  // Twelve unit squares apart from each other, nothing holding any: ten
+  // are named, then one line counts the rest (thousands of loose blocks
+  // would otherwise print thousands of lines).
+  std::string nodes, elements;
+  for (int k = 0; k < 12; ++k)
+    {
+      const auto node = [&](const int corner, const int x, const int y) {
+        nodes += std::to_string(4 * k + corner) + " " + std::to_string(x) +
+                 " " + std::to_string(y) + " 0\n";
+      };
+      node(1, 2 * k, 0);
+      node(2, 2 * k + 1, 0);
+      node(3, 2 * k + 1, 1);
+      node(4, 2 * k, 1);
+      elements += std::to_string(k + 1) + " 3 2 1 " + std::to_string(k + 1);
+      for (int corner = 1; corner <= 4; ++corner)
+        elements += " " + std::to_string(4 * k + corner);
+      elements += "\n";
+    }
+  write("loose.msh",
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n48\n" + nodes +
+          "$EndNodes\n$Elements\n12\n" + elements + "$EndElements\n");
+  write("loose.prm",
+        "set Scene = masonry\nsubsection Output\n  set Directory = results\n"
+        "  set Print timings = false\n  set Progress = false\n"
+        "  set Write VTU = false\nend\nsubsection Masonry\n"
+        "  set Geometry = mesh file\n  set Mesh file = loose.msh\n"
+        "  subsection Boundary conditions\n"
+        "    set Normal displacement zero =\n    set Signorini =\n"
+        "    set Traction boundaries =\n  end\nend\n");
+  const Result loose = run({"loose.prm"});
+  std::size_t  named = 0;
+  for (std::size_t at = 0;
+       (at = loose.err.find("is held by no support", at)) != std::string::npos;
+       ++at)
+    ++named;
+  std::cout << "twelve loose squares: exit code " << loose.code << ", " << named
+            << " named, the rest counted: "
+            << yes_no(loose.err.find("and 2 more groups of blocks") !=
+                      std::string::npos)
+            << "\n";
 }

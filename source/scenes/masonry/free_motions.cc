@@ -273,8 +273,8 @@ namespace unilateral::masonry
             "the whole structure (" + quantity(n_blocks, "block") + ")" :
           g.blocks.size() == 1 ?
             "block " + std::to_string(first_block) + where :
-            "the " + std::to_string(g.blocks.size()) +
-              " blocks joined to block " + std::to_string(first_block) + where;
+            "block " + std::to_string(first_block) + where + " and the " +
+              quantity(g.blocks.size() - 1, "block") + " joined to it";
         if (motions.size() == n_rigid_motions(dim))
           result.push_back(who + " is held by no support");
         else
@@ -287,6 +287,16 @@ namespace unilateral::masonry
                       motions[i];
             result.push_back(line);
           }
+      }
+    // A mesh of thousands of loose blocks would print thousands of notes.
+    constexpr std::size_t listed = 10;
+    if (result.size() > listed)
+      {
+        const std::size_t more = result.size() - listed;
+        result.resize(listed);
+        result.push_back("and " + std::to_string(more) +
+                         " more groups of blocks that the supports do not "
+                         "hold in every rigid motion");
       }
     return result;
   }

@@ -149,9 +149,10 @@ namespace unilateral::masonry
      * over its face: its force says nothing of the pressure there (it is
      * zero for a uniform one), and force / weight would be round-off over
      * round-off. Such a node takes the mean pressure, in its direction, of
-     * the nodes with a weight that share a cell with it, on its contact
-     * plane: the neighbouring edge midpoints of its contact faces (exact
-     * for a uniform pressure, like the rest), open or closed.
+     * the midpoints of the cells' edges from it that have a weight and
+     * lie on its contact plane: the neighbouring edge midpoints of its
+     * contact faces (exact for a uniform pressure, like the rest), open or
+     * closed.
      */
     const auto pressures_without_weight = [&](const auto &loads) {
       double largest = 0;
@@ -177,6 +178,32 @@ namespace unilateral::masonry
           }
         return std::abs(along) <= 1e-6 * std::sqrt(distance);
       };
+      // Only the midpoints of the cell's edges from a (2 b - a is a node of
+      // the cell): the midpoint of the opposite edge lies further off, and
+      // where a joint opens at a it showed a pressure none of a's
+      // neighbours has (a review).
+      const auto midpoint_of_edge_from =
+        [&](const unsigned int               a,
+            const unsigned int               b,
+            const std::vector<unsigned int> &nodes) {
+          const auto &pa        = contacts.node_position[a];
+          const auto &pb        = contacts.node_position[b];
+          double      half_edge = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            half_edge += (pb[c] - pa[c]) * (pb[c] - pa[c]);
+          half_edge = std::sqrt(half_edge);
+          for (const unsigned int end : nodes)
+            {
+              double off = 0;
+              for (unsigned int c = 0; c < dim; ++c)
+                off = std::max(off,
+                               std::abs(contacts.node_position[end][c] -
+                                        (2 * pb[c] - pa[c])));
+              if (off <= 1e-8 * half_edge)
+                return true;
+            }
+          return false;
+        };
       std::map<std::pair<unsigned int, unsigned int>, std::pair<double, int>>
         sums;
       for (const auto &[key, load] : loads)
@@ -204,7 +231,8 @@ namespace unilateral::masonry
                     {
                       const auto other = loads.find({b, it->first.second});
                       if (other != loads.end() && !weightless(other->second) &&
-                          in_plane(a, b, it->first.second))
+                          in_plane(a, b, it->first.second) &&
+                          midpoint_of_edge_from(a, b, cell_nodes))
                         {
                           it->second.first +=
                             other->second.force / other->second.weight;

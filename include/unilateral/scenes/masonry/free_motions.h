@@ -24,7 +24,8 @@ namespace unilateral::masonry
    * translations and dim (dim - 1) / 2 rotations scaled by the group's
    * size), eigenvalues below 1e-10 of the largest counting as zero.
    * Returns one line per group with free motions, saying which blocks and
-   * how they can move; empty if every group is held.
+   * how they can move (the first ten groups, then one line counting the
+   * rest); empty if every group is held.
    */
   template <int dim>
   std::vector<std::string>
