@@ -110,40 +110,15 @@ namespace unilateral::masonry
       const std::vector<MaterialClass> &classes;
       const std::vector<unsigned int>  &class_of_block;
     };
-  } // namespace
 
-  /*
-   * The VTU/PVD output. Point data: displacement (a vector, for ParaView's
-   * Warp By Vector), the stress tensor and von Mises stress, and at the
-   * contact nodes the contact pressure, the normal gap and the active set
-   * (zero elsewhere). Cell data: block id (= deal.II material_id) and
-   * material class. One dataset for all blocks.
-   *
-   * The nodal fields live on a scalar quadratic element with the same nodes.
-   * A node's pressure in a direction is the sum of its constraints' forces
-   * in that direction divided by its weight on its contact faces in that
-   * direction (int phi_node over them), which is exact for a uniform
-   * pressure. A block corner can carry constraints in several directions:
-   * there the output shows the larger pressure, the smaller gap, and
-   * "active" if any constraint is.
-   */
-  template <int dim>
-  void
-  MasonryScene<dim>::output_results(const RunContext &context) const
-  {
-    context.stage(registered_name, "writing VTU/PVD");
-    const Discretisation<dim> &discretisation = state->discretisation;
-    const ContactSet<dim>     &contacts       = state->contacts;
-    const std::size_t          n_nodes        = contacts.node_dofs.size();
-
-    // Per node and direction class: summed force, smallest gap, any active.
+    /// Per node and direction class: summed force, smallest gap, any active.
     struct Load
     {
       double force = 0, weight = 0, gap = std::numeric_limits<double>::max();
       bool   active = false;
     };
-    DirectionClasses<dim>                                 classes;
-    std::map<std::pair<unsigned int, unsigned int>, Load> at;
+    using Loads = std::map<std::pair<unsigned int, unsigned int>, Load>;
+
     /*
      * A corner of a quadratic triangle (P2 faces in 3D) has int phi = 0
      * over its face: its force says nothing of the pressure there (it is
@@ -154,7 +129,13 @@ namespace unilateral::masonry
      * contact faces (exact for a uniform pressure, like the rest), open or
      * closed.
      */
-    const auto pressures_without_weight = [&](const auto &loads) {
+    template <int dim>
+    std::map<std::pair<unsigned int, unsigned int>, double>
+    pressures_without_weight(const Loads                 &loads,
+                             const ContactSet<dim>       &contacts,
+                             const DirectionClasses<dim> &classes,
+                             const Discretisation<dim>   &discretisation)
+    {
       double largest = 0;
       for (const auto &entry : loads)
         largest = std::max(largest, std::abs(entry.second.weight));
@@ -211,12 +192,12 @@ namespace unilateral::masonry
           sums[key] = {0.0, 0};
       if (!sums.empty())
         {
-          const auto &fe = *state->discretisation.fe;
+          const auto                                  &fe = *discretisation.fe;
           std::vector<dealii::types::global_dof_index> dofs(
             fe.n_dofs_per_cell());
           std::vector<unsigned int> cell_nodes;
           for (const auto &cell :
-               state->discretisation.dof_handler.active_cell_iterators())
+               discretisation.dof_handler.active_cell_iterators())
             {
               cell->get_dof_indices(dofs);
               cell_nodes.clear();
@@ -249,7 +230,35 @@ namespace unilateral::masonry
       for (const auto &[key, sum] : sums)
         result[key] = sum.second > 0 ? sum.first / sum.second : 0.0;
       return result;
-    };
+    }
+  } // namespace
+
+  /*
+   * The VTU/PVD output. Point data: displacement (a vector, for ParaView's
+   * Warp By Vector), the stress tensor and von Mises stress, and at the
+   * contact nodes the contact pressure, the normal gap and the active set
+   * (zero elsewhere). Cell data: block id (= deal.II material_id) and
+   * material class. One dataset for all blocks.
+   *
+   * The nodal fields live on a scalar quadratic element with the same nodes.
+   * A node's pressure in a direction is the sum of its constraints' forces
+   * in that direction divided by its weight on its contact faces in that
+   * direction (int phi_node over them), which is exact for a uniform
+   * pressure. A block corner can carry constraints in several directions:
+   * there the output shows the larger pressure, the smaller gap, and
+   * "active" if any constraint is.
+   */
+  template <int dim>
+  void
+  MasonryScene<dim>::output_results(const RunContext &context) const
+  {
+    context.stage(registered_name, "writing VTU/PVD");
+    const Discretisation<dim> &discretisation = state->discretisation;
+    const ContactSet<dim>     &contacts       = state->contacts;
+    const std::size_t          n_nodes        = contacts.node_dofs.size();
+
+    DirectionClasses<dim> classes;
+    Loads                 at;
     for (std::size_t k = 0; k < constraints.size(); ++k)
       {
         const auto        &c     = contacts.constraints[k];
@@ -265,7 +274,8 @@ namespace unilateral::masonry
             load.active = load.active || constraints[k].active;
           }
       }
-    const auto          borrowed = pressures_without_weight(at);
+    const auto borrowed =
+      pressures_without_weight<dim>(at, contacts, classes, discretisation);
     std::vector<double> pressure(n_nodes, 0.0), gap(n_nodes, 0.0),
       active(n_nodes, 0.0);
     std::vector<char> any(n_nodes, 0);
