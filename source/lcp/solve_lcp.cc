@@ -269,6 +269,17 @@ namespace unilateral::lcp
           report.status  = Status::inaccurate;
           report.message = message.str();
         }
+      // An approximate method kept without the projection step: its answer
+      // is only as accurate as its own tolerance. Said here, so that final
+      // checks that find it short name this cause beside theirs (a review:
+      // TFETI's 'inaccurate' pointed at the wall, and its Tolerance 1e-10
+      // was the cure).
+      if (!info.exact && !regularise && !parameters.projection &&
+          report.converged() && report.message.empty())
+        report.message = "without the projection step ('Solver/Projection "
+                         "= false') the answer of " +
+                         info.label +
+                         " is only as accurate as its own tolerance";
       // An exact method on A itself needs no projection, unless its answer
       // fails the final checks: pivoting methods with an absolute tolerance
       // (block pivoting's 1e-6) can stop a few indices short on large
