@@ -435,7 +435,6 @@ namespace unilateral::masonry
                 continue;
               const double angle = std::acos(
                 std::max(-1.0, std::min(1.0, -(a.normal * b.normal))));
-
               double distance = 0;
               for (const auto &v : b.vertices)
                 distance =

@@ -131,10 +131,9 @@ namespace unilateral::masonry
      */
     template <int dim>
     std::map<std::pair<unsigned int, unsigned int>, double>
-    pressures_without_weight(const Loads                 &loads,
-                             const ContactSet<dim>       &contacts,
-                             const DirectionClasses<dim> &classes,
-                             const Discretisation<dim>   &discretisation)
+    pressures_without_weight(const Loads               &loads,
+                             const ContactSet<dim>     &contacts,
+                             const Discretisation<dim> &discretisation)
     {
       double largest = 0;
       for (const auto &entry : loads)
@@ -142,27 +141,12 @@ namespace unilateral::masonry
       const auto weightless = [&](const Load &load) {
         return !(std::abs(load.weight) > 1e-10 * largest);
       };
-      // Only nodes on the plane of the contact face through a: a cell may
-      // also touch another contact of the same direction (a block's top
-      // and bottom joints, one cell apart).
-      const auto in_plane = [&](const unsigned int a,
-                                const unsigned int b,
-                                const unsigned int klass) {
-        const auto &d     = classes.directions[klass];
-        double      along = 0, distance = 0;
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            const double step =
-              contacts.node_position[b][c] - contacts.node_position[a][c];
-            along += d[c] * step;
-            distance += step * step;
-          }
-        return std::abs(along) <= 1e-6 * std::sqrt(distance);
-      };
       // Only the midpoints of the cell's edges from a (2 b - a is a node of
       // the cell): the midpoint of the opposite edge lies further off, and
       // where a joint opens at a it showed a pressure none of a's
-      // neighbours has (a review).
+      // neighbours has (a review). Such a midpoint with a weight in a's
+      // direction lies on a's contact plane: one of another contact of
+      // that direction would be inside the block.
       const auto midpoint_of_edge_from =
         [&](const unsigned int               a,
             const unsigned int               b,
@@ -212,7 +196,6 @@ namespace unilateral::masonry
                     {
                       const auto other = loads.find({b, it->first.second});
                       if (other != loads.end() && !weightless(other->second) &&
-                          in_plane(a, b, it->first.second) &&
                           midpoint_of_edge_from(a, b, cell_nodes))
                         {
                           it->second.first +=
@@ -275,7 +258,7 @@ namespace unilateral::masonry
           }
       }
     const auto borrowed =
-      pressures_without_weight<dim>(at, contacts, classes, discretisation);
+      pressures_without_weight<dim>(at, contacts, discretisation);
     std::vector<double> pressure(n_nodes, 0.0), gap(n_nodes, 0.0),
       active(n_nodes, 0.0);
     std::vector<char> any(n_nodes, 0);
