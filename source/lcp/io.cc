@@ -316,6 +316,9 @@ namespace unilateral::lcp
     unsigned int        line_number = 0;
     std::vector<double> values;
     bool                array_header = false, size_line_seen = false;
+    // The size line of an array header, "rows 1": the values it announces.
+    long long    announced        = -1;
+    unsigned int size_line_number = 0;
     while (std::getline(in, line))
       {
         ++line_number;
@@ -328,7 +331,24 @@ namespace unilateral::lcp
           continue;
         if (array_header && !size_line_seen)
           {
-            size_line_seen = true; // "rows 1"
+            size_line_seen   = true;
+            size_line_number = line_number;
+            std::istringstream size_line(line);
+            std::string        rows, columns, extra;
+            long long          n_columns = 0;
+            if (!(size_line >> rows >> columns) || (size_line >> extra) ||
+                !parse_index(rows, announced) ||
+                !parse_index(columns, n_columns) || announced < 0)
+              fail(file_name,
+                   line_number,
+                   "expected the size line 'rows 1' of a Matrix Market "
+                   "array, found '" +
+                     clipped(line) + "'");
+            if (n_columns != 1)
+              fail(file_name,
+                   line_number,
+                   "the size line announces " + columns +
+                     " columns; a vector is one column ('rows 1')");
             continue;
           }
         std::istringstream tokens(line);
@@ -341,6 +361,11 @@ namespace unilateral::lcp
           fail(file_name, line_number, "value is not a finite number");
         values.push_back(value);
       }
+    if (announced >= 0 && static_cast<long long>(values.size()) != announced)
+      fail(file_name,
+           size_line_number,
+           "the size line announces " + std::to_string(announced) +
+             " values, the file holds " + std::to_string(values.size()));
     return Eigen::Map<Vector>(values.data(), values.size());
   }
 

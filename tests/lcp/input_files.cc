@@ -134,4 +134,28 @@ main()
   expect_error("an entry with a fourth token",
                run_lcp("four_tokens", "four_tokens.mtx", "c.txt"),
                {"four_tokens.mtx:4:", "'2 1 -1 0.5'"});
+  // A right-hand side in Matrix Market array form had its size line
+  // skipped: "2 2" (a matrix of two columns) with two values was solved.
+  const auto run_with_b = [](const std::string &name) {
+    write(name + ".prm",
+          "set Scene = lcp\n"
+          "subsection Output\n  set Directory = results\n"
+          "  set Print timings = false\n  set Progress = false\nend\n"
+          "subsection LCP\n  set Matrix file = A.mtx\n"
+          "  set Right-hand side file = " +
+            name +
+            ".txt\n"
+            "  set Constraints file = c.txt\nend\n");
+    return run({name + ".prm"});
+  };
+  write("b_two_columns.txt",
+        "%%MatrixMarket matrix array real general\n2 2\n1\n-2\n");
+  expect_error("a vector whose size line announces two columns",
+               run_with_b("b_two_columns"),
+               {"b_two_columns.txt:2:", "2 columns"});
+  write("b_short.txt",
+        "%%MatrixMarket matrix array real general\n3 1\n1\n-2\n");
+  expect_error("a vector with fewer values than its size line announces",
+               run_with_b("b_short"),
+               {"b_short.txt:2:", "announces 3 values", "holds 2"});
 }
