@@ -410,7 +410,9 @@ namespace unilateral::lcp
   }
 
   Vector
-  ActiveSetSystem::near_null_direction(const std::vector<char> &fixed)
+  ActiveSetSystem::near_null_direction(const std::vector<char> &fixed,
+                                       const Vector            *loads,
+                                       Vector                  *driven)
   {
     const Index  n    = A.rows();
     const double mean = diagonal_scale(A);
@@ -443,6 +445,25 @@ namespace unilateral::lcp
         const double largest = direction.lpNorm<Eigen::Infinity>();
         if (largest > 0)
           direction /= largest;
+        if (loads != nullptr && driven != nullptr && loads->size() == n)
+          {
+            // Two steps from the loads on the free indices.
+            DenseMatrix step(n, 1);
+            for (Index i = 0; i < n; ++i)
+              step(i, 0) = fixed[i] ? 0.0 : (*loads)[i];
+            for (int k = 0; k < 2; ++k)
+              {
+                solve_with(*own, step, result);
+                step = result;
+                for (Index i = 0; i < n; ++i)
+                  if (fixed[i])
+                    step(i, 0) = 0;
+                const double size = step.col(0).lpNorm<Eigen::Infinity>();
+                if (size > 0)
+                  step /= size;
+              }
+            *driven = step.col(0);
+          }
       }
     own_valid = false; // a factor of the shifted matrix
     return direction;

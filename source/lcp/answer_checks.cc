@@ -52,6 +52,12 @@ namespace unilateral::lcp
       return scale;
     }
 
+    /// Where A is definite (every body held) an answer that fails a check
+    /// has not converged, whatever its method's own test said.
+    constexpr const char *stopped_short =
+      "the method stopped short of the answer: tighten its own tolerance, "
+      "or set 'Solver/Projection = true' (the default) to finish it exactly";
+
     // The report becomes 'inaccurate' with @p message in front.
     void
     downgrade(Report &report, const std::string &message)
@@ -189,8 +195,10 @@ namespace unilateral::lcp
     std::ostringstream message;
     message << std::setprecision(3) << "the answer fails the work check: "
             << "b^T u + lambda_S^T l_S = " << work
-            << " < 0, but it equals u^T A u >= 0 at every solution (a body "
-               "drifted away as a rigid motion?)";
+            << " < 0, but it equals u^T A u >= 0 at every solution ("
+            << (problem.definite ? stopped_short :
+                                   "a body drifted away as a rigid motion?")
+            << ")";
     downgrade(report, message.str());
   }
 
@@ -256,9 +264,12 @@ namespace unilateral::lcp
                  "tolerance' and ten times its rounding error, "
               << 10 * resolution
               << "), counting a force on an open contact, although "
-                 "the relative KKT residuals pass (a body held by round-off, "
-                 "or a contact force far smaller than the problem's largest "
-                 "motion?)";
+                 "the relative KKT residuals pass ("
+              << (problem.definite ?
+                    stopped_short :
+                    "a body held by round-off, or a contact force far "
+                    "smaller than the problem's largest motion?")
+              << ")";
     else
       return;
     downgrade(report, message.str());

@@ -307,6 +307,15 @@ namespace unilateral::lcp
     return mean > 0 ? mean : 1.0;
   }
 
+  std::string
+  singular_cause(const Problem &problem)
+  {
+    if (problem.definite)
+      return "A is positive definite, so this is round-off: are its "
+             "unknowns of very different sizes in the units given?";
+    return "some body is held by no active constraint";
+  }
+
   double
   energy(const Problem &problem, const Vector &u)
   {

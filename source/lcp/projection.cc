@@ -109,6 +109,11 @@ namespace unilateral::lcp
         shift_diagonal(proximal, new_eps - eps);
         eps = new_eps;
       };
+      // Where A is definite a solution exists: runaway steps are round-off.
+      const std::string runaway =
+        problem.definite ?
+          "A is positive definite, so a solution exists: round-off?" :
+          "no solution: a load that drives a body away?";
       Report              result;
       const Vector        start         = solution.u;
       double              previous_step = 0;
@@ -140,8 +145,8 @@ namespace unilateral::lcp
             {
               std::ostringstream message;
               message << "the proximal point iteration moved the answer by "
-                      << moved << ", more than its own size (no solution: "
-                      << "a load that drives a body away?)";
+                      << moved << ", more than its own size (" << runaway
+                      << ")";
               result.status  = Status::iteration_limit;
               result.message = message.str();
               return result;
@@ -162,8 +167,7 @@ namespace unilateral::lcp
       if (residuals.back() <= tolerance)
         message << "the proximal point steps do not shrink (the last moved "
                    "the answer by "
-                << previous_step
-                << "): no solution, a load that drives a body away?";
+                << previous_step << "): " << runaway;
       else
         message << "the proximal point iteration stalled at a KKT residual "
                    "of "
@@ -229,7 +233,10 @@ namespace unilateral::lcp
                                            labelled.get());
         report.projection_iterations += projection.iterations;
         report.counters += projection.counters;
-        if (projection.converged() || !stage_left)
+        // A proof that there is no solution ends it (PDAS's free motion
+        // along which the loads do work without bound).
+        if (projection.converged() || !stage_left ||
+            projection.status == Status::infeasible)
           break;
 
         // One continuation stage on A + eps_k d I, warm-started.
@@ -254,9 +261,10 @@ namespace unilateral::lcp
     // Where the projection onto A fails, A is singular on the answer's
     // free set or PDAS does not settle on it: finish by the proximal point
     // method instead, with the eps the approximate answer was computed
-    // with, so that its first problem lies next to that answer.
+    // with, so that its first problem lies next to that answer. Not where
+    // the projection proved that there is no answer.
     std::string proximal_failure;
-    if (!projection.converged())
+    if (!projection.converged() && projection.status != Status::infeasible)
       {
         Solution     finish   = approximate;
         const Report proximal = proximal_point(problem,
@@ -281,7 +289,7 @@ namespace unilateral::lcp
       {
         report.status  = projection.status;
         report.message = "projection step: " + projection.message;
-        if (projection.status == Status::singular)
+        if (projection.status == Status::singular && !problem.definite)
           report.message +=
             ": without regularisation this LCP has no unique solution for "
             "that active set (check that every body can be supported), or "

@@ -334,6 +334,17 @@ namespace unilateral::lcp
         methods.at(info.name)->check("Solver/" + info.subsection);
     // The Selection pattern admits only registered names; the registry's
     // message is the better one if that ever changes.
-    SolverRegistry::get(method);
+    const SolverInfo &info = SolverRegistry::get(method);
+    // Refused here, before a scene makes its run directory, as well as by
+    // solve_lcp for callers that build their parameters in code.
+    check_parameter(!schur_complement ||
+                      !(info.needs_tearing || info.needs_hierarchy),
+                    "Solver",
+                    "Schur complement",
+                    "true",
+                    "method '" + method +
+                      "' works on the whole problem (its subdomains or its "
+                      "meshes), not on the Schur complement on the "
+                      "constrained unknowns: set it to false");
   }
 } // namespace unilateral::lcp

@@ -133,6 +133,57 @@ main()
                              u));
   }
 
+  // LCPs without a solution, proved by PDAS itself: the free motion of a
+  // singular system along which the loads do work and no bound resists
+  // (before, a review's Neumann chain of 1000 nodes took 10 s of exact
+  // resolutions and Graves' dense pivoting to say so, of 4000 over 90 s).
+  // Truth: the chain's A has the constant vector as its null space, so
+  // b = 1/n > 0 with u >= 0 has none, b = -1/n has u = 0, and a spring at
+  // one end holds it (a solution exists, however far away).
+  {
+    const Index n     = 2000;
+    const auto  chain = [n](const double spring, const double load) {
+      DenseMatrix A = DenseMatrix::Zero(n, n);
+      for (Index i = 0; i + 1 < n; ++i)
+        {
+          A(i, i) += 1;
+          A(i + 1, i + 1) += 1;
+          A(i, i + 1) = A(i + 1, i) = -1;
+        }
+      A(0, 0) += spring;
+      std::vector<Index> S(n);
+      for (Index i = 0; i < n; ++i)
+        S[i] = i;
+      return make_problem(A,
+                          Vector::Constant(n, load / n),
+                          S,
+                          std::vector<double>(n, 0.0));
+    };
+    Vector       u;
+    const Report pushed = solve_with(chain(0, 1), method("pdas"), u, 0);
+    report_solver("pdas, a free chain pushed off its bounds", pushed);
+    std::cout << "  proved at once (no exact resolution, no verification): "
+              << yes_no(pushed.status == Status::infeasible &&
+                        pushed.counters.resolved_subsets == 0)
+              << "\n";
+    const Report pressed = solve_with(chain(0, -1), method("pdas"), u, 0);
+    std::cout << "pdas, the free chain pressed onto its bounds: status "
+              << to_string(pressed.status)
+              << ", u = 0: " << yes_no(u.size() == n && u.isZero(0)) << "\n";
+    // Held by a spring, the chain has a solution, however far: no proof.
+    // Of 1e-2, PDAS finds it; of 4e-10 (a stiffness along the motion of
+    // 1e-13 of A's mean diagonal, a hundred times the proof's bound) it is
+    // beyond double precision, and PDAS must not claim there is none.
+    const Report held = solve_with(chain(1e-2, 1), method("pdas"), u);
+    std::cout << "pdas, the chain pushed off but held by a spring of 1e-2: "
+                 "status "
+              << to_string(held.status)
+              << ", KKT <= 1e-8: " << yes_no(held.kkt.max() <= 1e-8) << "\n";
+    const Report barely = solve_with(chain(4e-10, 1), method("pdas"), u);
+    std::cout << "pdas, held by a spring of 4e-10: no claim of no solution: "
+              << yes_no(barely.status != Status::infeasible) << "\n";
+  }
+
   // Singular reduced systems.
   {
     DenseMatrix A(2, 2);

@@ -8,6 +8,7 @@
 
 #include "../test_tools.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -21,6 +22,9 @@ namespace
     std::string plate;     // body of subsection Plate
     std::string parameter; // what the message must name
     std::string value;     // and the value it must quote
+    // Found only on the mesh, after the run directory is made: then that
+    // directory must hold an error summary.json instead.
+    bool found_on_mesh = false;
   };
 
   bool
@@ -41,7 +45,25 @@ namespace
     std::cout << c.name << ": exit code " << code << ", " << message;
     const bool one_line =
       !message.empty() && message.find('\n') == message.size() - 1;
-    return code == 1 && one_line &&
+    // Refused before the run directory is made where it can be (README).
+    const std::string directory = "results/bad_" + c.name;
+    bool              directory_right;
+    if (c.found_on_mesh)
+      {
+        std::ifstream     summary(directory + "/summary.json");
+        std::stringstream text;
+        text << summary.rdbuf();
+        directory_right =
+          text.str().find("\"status\": \"error\"") != std::string::npos;
+      }
+    else
+      directory_right = !std::filesystem::exists(directory);
+    if (!directory_right)
+      std::cout << "  (" << directory
+                << (c.found_on_mesh ? " without an error summary.json" :
+                                      " made")
+                << ")\n";
+    return code == 1 && one_line && directory_right &&
            message.find(c.parameter) != std::string::npos &&
            message.find(c.value) != std::string::npos;
   }
@@ -70,6 +92,13 @@ main()
      "    set Correction reduction = 1e-300\n  end\n",
      "Solver/TNNMG/Correction reduction",
      "= 1e-300"},
+    // Refused when the parameters are read, not after the run directory
+    // and its summary.json are made (a review).
+    {"tnnmg_schur_complement",
+     "end\nsubsection Solver\n  set Method = tnnmg\n"
+     "  set Schur complement = true\n",
+     "Solver/Schur complement",
+     "= true"},
     {"no_elements",
      "subsection Geometry\n  set Elements x = 0\nend\n",
      "Plate/Geometry/Elements x",
@@ -110,7 +139,8 @@ main()
      "subsection Geometry\n  set Elements x = 4\n  set Elements y = 4\nend\n"
      "subsection Obstacle\n  set Function = 1/(x - 50)\nend\n",
      "Plate/Obstacle/Function",
-     "= 1/(x - 50)"},
+     "= 1/(x - 50)",
+     true},
     {"force_parse_error",
      "subsection Load\n  set Force = -1 *\nend\n",
      "Plate/Load/Force",
@@ -127,7 +157,8 @@ main()
      "subsection Geometry\n  set Elements x = 4\n  set Elements y = 4\nend\n"
      "subsection Load\n  set Force = sqrt(-1 - x)\nend\n",
      "Plate/Load/Force",
-     "= sqrt(-1 - x): evaluates to nan"},
+     "= sqrt(-1 - x): evaluates to nan",
+     true},
     {"subdivisions_zero",
      "subsection Output\n  set Subdivisions = 0\nend\n",
      "Plate/Output/Subdivisions",

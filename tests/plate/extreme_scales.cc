@@ -19,6 +19,11 @@
 //     (1e-4 / 2)^3: the 2 mm plate's deflections and contact set, every
 //     method (a review: PDAS, block pivoting and the interior point ended
 //     'inaccurate' before the plate scene got its force unit).
+// A failure line speaks of no "body" (a review, 2026-11-27: the solver
+// layer's causes for blocks, "some body is held by no active constraint",
+// "a body held by round-off", ended the plate's lines): a clamped plate's
+// stiffness is definite. 6. TNNMG stopped early by weak settings without
+// the projection step: its line says it stopped short.
 #include "plate_runs.h"
 
 #include <cmath>
@@ -69,6 +74,11 @@ main()
                 << (!tiny.report.converged() ||
                         close(tiny.results().min_deflection,
                               1e-20 * reference) ?
+                      "yes" :
+                      "NO")
+                << ", its failure line speaks of no body: "
+                << (tiny.scene->failure_description(tiny.report).find("body") ==
+                        std::string::npos ?
                       "yes" :
                       "NO")
                 << "\n";
@@ -165,4 +175,28 @@ main()
               std::string())
         << "\n";
     }
+  {
+    const Run stopped =
+      run_plate("stopped_short",
+                "subsection Geometry\n  set Elements x = 4\n"
+                "  set Elements y = 400\nend\n"
+                "subsection Obstacle\n  set Function = psi3\nend\n"
+                "subsection Load\n  set Force = f3\nend\n",
+                "tnnmg",
+                false,
+                "set Projection = false\nsubsection TNNMG\n"
+                "  set Correction reduction = 0.9\n"
+                "  set Cycles per correction = 1\n  set Cycle = V\nend\n");
+    const std::string line = stopped.scene->failure_description(stopped.report);
+    std::cout << "weak tnnmg without projection: "
+              << (stopped.report.converged() ? "converged" : "not converged")
+              << ", its failure line says it stopped short and speaks of no "
+                 "body: "
+              << (!stopped.report.converged() &&
+                      line.find("stopped short") != std::string::npos &&
+                      line.find("body") == std::string::npos ?
+                    "yes" :
+                    "NO")
+              << "\n";
+  }
 }

@@ -124,10 +124,16 @@ namespace unilateral::lcp
      * entries are of order one where a nearly free motion moves an index
      * and of order delta elsewhere. Empty if even the shifted matrix cannot
      * be factorised. The own factor is not kept (it is of the shifted
-     * matrix).
+     * matrix). If @p loads and @p driven are given, two steps from the
+     * loads on the free indices are put in @p driven: the motion the loads
+     * drive, a null vector to round-off where a body floats (its error
+     * along a stiff direction of stiffness lambda falls by delta / lambda
+     * per step), for unbounded_direction.h.
      */
     Vector
-    near_null_direction(const std::vector<char> &fixed);
+    near_null_direction(const std::vector<char> &fixed,
+                        const Vector            *loads  = nullptr,
+                        Vector                  *driven = nullptr);
 
     /// The most recent factor (own or inherited), for a follow-up system.
     std::shared_ptr<const ActiveSetFactor>

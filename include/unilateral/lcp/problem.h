@@ -159,6 +159,13 @@ namespace unilateral::lcp
   double
   energy(const Problem &problem, const Vector &u);
 
+  /// What a failure message blames where a system of A's rows came out
+  /// singular or an answer ran away: a body held by no constraint, or,
+  /// where A is definite (Problem::definite: every body held), round-off,
+  /// which only a badly scaled problem makes that large.
+  std::string
+  singular_cause(const Problem &problem);
+
   /**
    * Relative KKT residuals of u (lambda = A u - b is computed here, so no
    * solver can report a residual it did not earn), in the unknowns scaled

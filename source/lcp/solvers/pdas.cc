@@ -33,6 +33,7 @@
 #include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/solver.h>
 #include <unilateral/lcp/subset_resolution.h>
+#include <unilateral/lcp/unbounded_direction.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -605,7 +606,9 @@ namespace unilateral::lcp
        * kept a brick from rotating lies slightly open. The open constrained
        * indices that the free motion moves are then resolved exactly, with
        * the rest kept (a few times, if that frees another body). False if
-       * the system stays singular.
+       * the system stays singular, or if the free motion is one along which
+       * the loads drive the unknowns without bound (then no_solution says
+       * so: the LCP has none).
        */
       bool
       solve_step(const unsigned int iteration,
@@ -616,7 +619,13 @@ namespace unilateral::lcp
         for (unsigned int attempt = 0; !solved && safeguards_on && attempt < 3;
              ++attempt)
           {
-            const std::vector<Index> subset = moved_by_free_motion();
+            Vector       driven;
+            const Vector free_motion =
+              system.near_null_direction(active, &problem.b, &driven);
+            no_solution = unbounded_direction(problem, driven);
+            if (!no_solution.empty())
+              break;
+            const std::vector<Index> subset = moved_by_free_motion(free_motion);
             history.add_to_cycle(subset);
             if (progress != nullptr)
               *progress << "    pdas iteration " << iteration + 1
@@ -652,6 +661,9 @@ namespace unilateral::lcp
 
       /// The size of the last subset resolved exactly.
       std::size_t resolved_size = 0;
+      /// Set where a singular system's free motion proves that the LCP has
+      /// no solution (unbounded_direction.h): what it proves.
+      std::string no_solution;
 
     private:
       // Resolve U exactly (see resolve_subset); false if that failed.
@@ -708,11 +720,10 @@ namespace unilateral::lcp
         return system.solve(active, problem.b, u);
       }
 
-      /// The open constraints a free motion of the singular system moves.
+      /// The open constraints @p free_motion of the singular system moves.
       std::vector<Index>
-      moved_by_free_motion()
+      moved_by_free_motion(const Vector &free_motion) const
       {
-        const Vector       free_motion = system.near_null_direction(active);
         std::vector<Index> subset;
         if (free_motion.size() == problem.size())
           for (const Index i : problem.constrained)
@@ -772,12 +783,18 @@ namespace unilateral::lcp
           // Step 4.
           if (!pdas.solve_step(iteration, change, progress))
             {
+              if (!pdas.no_solution.empty())
+                {
+                  report.status  = Status::infeasible;
+                  report.message = "PDAS: " + pdas.no_solution;
+                  break;
+                }
               report.status = Status::singular;
               report.message =
                 "PDAS: the reduced system A_FF is singular for the active "
                 "set of iteration " +
-                std::to_string(iteration + 1) +
-                " (some body is held by no active constraint)";
+                std::to_string(iteration + 1) + " (" + singular_cause(problem) +
+                ")";
               break;
             }
           report.iterations = iteration + 1;

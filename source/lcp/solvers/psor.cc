@@ -15,8 +15,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <ostream>
+#include <sstream>
 
 namespace unilateral::lcp
 {
@@ -177,10 +179,15 @@ namespace unilateral::lcp
               }
             if (sweep >= limit)
               {
+                // std::to_string's fixed six decimals showed 3e-9 as
+                // "0.000000 > tolerance" (a review).
+                std::ostringstream message;
+                message << std::setprecision(3) << "PSOR reached " << limit
+                        << " sweeps with relative change " << error
+                        << " > the tolerance " << tolerance
+                        << " ('Solver/PSOR/Tolerance'; 0 means n eps)";
                 report.status  = Status::iteration_limit;
-                report.message = "PSOR reached " + std::to_string(limit) +
-                                 " sweeps with relative change " +
-                                 std::to_string(error) + " > tolerance";
+                report.message = message.str();
                 return;
               }
           }
