@@ -24,6 +24,11 @@ namespace unilateral::lcp
     /// retry of a method that met a singular matrix where none was expected.
     constexpr double floating_bodies_regularisation = 1e-9;
 
+    /// A relative regularisation at most this size holds no body: the
+    /// Schur complement's n_c eps of Ainsworth & Mihai, which keeps its
+    /// factorisation from failing on round-off only.
+    constexpr double round_off_regularisation = 1e-12;
+
     /// d |l|_inf / |b|_inf where bodies can float: how far the bounds let
     /// the bodies move as rigid bodies, against the elastic displacements
     /// the loads cause (0 where that means nothing).
@@ -347,10 +352,15 @@ namespace unilateral::lcp
     /**
      * The attempt that continues @p attempt after its @p outcome, if any,
      * with the progress line that says why:
-     *  - a method that needs a definite matrix and meets a singular one on
-     *    a problem expected definite ('auto' without floating bodies: an LCP
-     *    read from files) is tried again regularised, as on floating
-     *    bodies; this follows from the property, so no method declares it;
+     *  - a method that needs a definite matrix, or follows the central path
+     *    (whose Newton systems turn singular where the solutions are not
+     *    unique), and meets a singular one on a problem expected definite
+     *    ('auto' without floating bodies: an LCP read from files, or the
+     *    Schur complement with its round-off regularisation) is tried again
+     *    regularised, as on floating bodies, and then projected onto A;
+     *    this follows from the property, so no method declares it (a
+     *    review: pdpc, and block pivoting on the Schur complement, ended
+     *    `singular` on A = [1 1; 1 1], b = (1, 1), which has solutions);
      *  - a hand-over the method declares.
      */
     std::optional<Attempt>
@@ -359,10 +369,11 @@ namespace unilateral::lcp
                  std::ostream  *progress)
     {
       if (outcome.method_status == Status::singular &&
-          relative_regularisation(attempt) == 0 &&
-          attempt.method->needs_definite_matrix &&
+          relative_regularisation(attempt) <= round_off_regularisation &&
+          (attempt.method->needs_definite_matrix ||
+           attempt.method->follows_central_path()) &&
           attempt.parameters.regularisation < 0 &&
-          attempt.auto_regularisation == 0)
+          attempt.auto_regularisation <= round_off_regularisation)
         {
           if (progress != nullptr)
             *progress << "    " << outcome.report.message

@@ -216,6 +216,28 @@ main()
                   regularised);
     std::cout << "  a solution (KKT <= 1e-10): "
               << yes_no(regularised.kkt.max() <= 1e-10) << "\n";
+    // A semidefinite LCP with a segment of solutions, u_1 + u_2 = 1 (the
+    // energy -1/2; truth by hand): pdpc, whose Newton system turns singular
+    // as its iterate approaches the segment, and block pivoting on the
+    // Schur complement, regularised by round-off only, ended `singular`
+    // (a review); both are now tried again regularised, then projected.
+    {
+      DenseMatrix A_segment(2, 2);
+      A_segment << 1, 1, 1, 1;
+      const Problem segment =
+        make_problem(A_segment, Vector::Constant(2, 1.0), {0, 1}, {0, 0});
+      for (const Method &run :
+           {method("pdpc"),
+            Method{&SolverRegistry::get("block_pivoting"), true}})
+        {
+          const Report report = solve_with(segment, run, u);
+          std::cout << run.label() << " on A = [1 1; 1 1], b = (1, 1): status "
+                    << to_string(report.status) << ", on the segment: "
+                    << yes_no(u.size() == 2 && u.minCoeff() >= 0 &&
+                              std::abs(u.sum() - 1) <= 1e-12)
+                    << "\n";
+        }
+    }
     DenseMatrix A2(2, 2);
     A2 << 1, 0, 0, 0;
     Vector b2(2);
