@@ -55,8 +55,7 @@ namespace unilateral::lcp
     /// Where A is definite (every body held) an answer that fails a check
     /// has not converged, whatever its method's own test said.
     constexpr const char *stopped_short =
-      "the method stopped short of the answer: tighten its own tolerance, "
-      "or set 'Solver/Projection = true' (the default) to finish it exactly";
+      "the method stopped short of the answer: tighten its own tolerance";
 
     // The report becomes 'inaccurate' with @p message in front.
     void

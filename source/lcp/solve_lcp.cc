@@ -352,15 +352,14 @@ namespace unilateral::lcp
     /**
      * The attempt that continues @p attempt after its @p outcome, if any,
      * with the progress line that says why:
-     *  - a method that needs a definite matrix, or follows the central path
-     *    (whose Newton systems turn singular where the solutions are not
-     *    unique), and meets a singular one on a problem expected definite
-     *    ('auto' without floating bodies: an LCP read from files, or the
-     *    Schur complement with its round-off regularisation) is tried again
-     *    regularised, as on floating bodies, and then projected onto A;
-     *    this follows from the property, so no method declares it (a
-     *    review: pdpc, and block pivoting on the Schur complement, ended
-     *    `singular` on A = [1 1; 1 1], b = (1, 1), which has solutions);
+     *  - a method that needs a definite matrix and meets a singular one on
+     *    a problem expected definite ('auto' without floating bodies: an LCP
+     *    read from files, or the Schur complement with its round-off
+     *    regularisation) is tried again regularised, as on floating bodies,
+     *    and then projected onto A; this follows from the property, so no
+     *    method declares it (a review: block pivoting on the Schur
+     *    complement ended `singular` on A = [1 1; 1 1], b = (1, 1), whose
+     *    solutions form a segment);
      *  - a hand-over the method declares.
      */
     std::optional<Attempt>
@@ -370,8 +369,7 @@ namespace unilateral::lcp
     {
       if (outcome.method_status == Status::singular &&
           relative_regularisation(attempt) <= round_off_regularisation &&
-          (attempt.method->needs_definite_matrix ||
-           attempt.method->follows_central_path()) &&
+          attempt.method->needs_definite_matrix &&
           attempt.parameters.regularisation < 0 &&
           attempt.auto_regularisation <= round_off_regularisation)
         {

@@ -220,7 +220,8 @@ main()
     // energy -1/2; truth by hand): pdpc, whose Newton system turns singular
     // as its iterate approaches the segment, and block pivoting on the
     // Schur complement, regularised by round-off only, ended `singular`
-    // (a review); both are now tried again regularised, then projected.
+    // (a review). PDPC's singular system is now checked by PDAS, and block
+    // pivoting is tried again regularised, then projected.
     {
       DenseMatrix A_segment(2, 2);
       A_segment << 1, 1, 1, 1;

@@ -19,12 +19,16 @@ namespace unilateral::lcp
    * indices held at their bounds: the motion the loads drive there
    * (ActiveSetSystem::near_null_direction). It is taken as a proof only where
    * it is one in double precision: A's stiffness along it below 1e-15 of A's
-   * mean diagonal (an A regularised automatically, by at least 1e-14 of it,
-   * never qualifies), its entries on the constrained indices of one sign to
-   * 1e-8 of its largest, and the loads' work along it at least 1e-6 of
-   * |b| |d|: the minimiser along such a ray, if any, would lie more than
-   * 1e8 times the elastic displacements away. Returns a description for
-   * the failure message, empty where @p direction proves nothing.
+   * mean diagonal d (an A regularised for floating bodies, by at least
+   * 1e-14 d, never qualifies; the Schur complement's round-off shift
+   * n_c eps d, below that for n_c <= 4, does, where the LCP without it has
+   * no solution either), its entries on the constrained indices of one
+   * sign to 1e-8 of its largest, and the loads' work along it at least
+   * 1e-6 of |b| |d|: the minimiser along such a ray, if A had one, would
+   * lie at least 1e9 |b| / d away (on the paper's walls a millionfold of
+   * the elastic displacements, as a review measured). Returns a
+   * description for the failure message, empty where @p direction proves
+   * nothing.
    */
   std::string
   unbounded_direction(const Problem &problem, Vector direction);

@@ -785,8 +785,9 @@ namespace unilateral::lcp
             {
               if (!pdas.no_solution.empty())
                 {
-                  report.status  = Status::infeasible;
-                  report.message = "PDAS: " + pdas.no_solution;
+                  report.status     = Status::infeasible;
+                  report.message    = "PDAS: " + pdas.no_solution;
+                  report.iterations = iteration + 1;
                   break;
                 }
               report.status = Status::singular;

@@ -42,6 +42,7 @@
 #include <iomanip>
 #include <limits>
 #include <ostream>
+#include <sstream>
 #include <vector>
 
 namespace unilateral::lcp
@@ -139,6 +140,16 @@ namespace unilateral::lcp
         info.subsection  = "PDPC";
         info.default_iterations = "500";
         info.exact              = false;
+        // Its Newton system turns singular where the solutions are not
+        // unique (A = [1 1; 1 1], b = (1, 1): the segment u1 + u2 = 1) or
+        // the iterate breaks down; that says nothing about the LCP, so
+        // "singular" is checked by PDAS, which solves it or proves that
+        // there is no solution (a review).
+        FollowUp check;
+        check.kind   = FollowUp::Kind::verification;
+        check.when   = Status::singular;
+        check.method = "pdas";
+        info.follow_ups.push_back(check);
         return info;
       }
 
@@ -357,11 +368,12 @@ namespace unilateral::lcp
             }
           if (iteration >= limit)
             {
-              report.status  = Status::iteration_limit;
-              report.message = "PDPC reached " + std::to_string(limit) +
-                               " iterations (mu " + std::to_string(pdpc.mu) +
-                               ", residual " +
-                               std::to_string(pdpc.residual_norm) + ")";
+              report.status = Status::iteration_limit;
+              std::ostringstream message;
+              message << std::setprecision(3) << "PDPC reached " << limit
+                      << " iterations (mu " << pdpc.mu << ", residual "
+                      << pdpc.residual_norm << ")";
+              report.message = message.str();
               break;
             }
           report.iterations = iteration + 1;
