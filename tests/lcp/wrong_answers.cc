@@ -11,7 +11,12 @@
 //  4. an indefinite A is refused before any answer (it was solved: pdas gave
 //     u = (1/3, 1/3), graves (0, 1));
 //  5. unknowns whose stiffness differs by 1e24: right in each unknown's own
-//     units, or not converged.
+//     units, or not converged;
+//  6. loads that differ by 1e13, with and without the projection step:
+//     each unknown right against its own load, or not converged (a review:
+//     the interior point without the projection ended 'converged' with a
+//     contact a thousandth off, the KKT residuals relative to the largest
+//     force blind to it).
 #include <unilateral/base/input_error.h>
 
 #include "../lcp_test_tools.h"
@@ -30,9 +35,10 @@ namespace
   // 'converged' shows, even where the verdict accepts both).
   template <typename Verdict>
   void
-  every_method(const std::string &what,
-               const Problem     &problem,
-               const Verdict     &verdict)
+  every_method(const std::string      &what,
+               const Problem          &problem,
+               const Verdict          &verdict,
+               const SolverParameters &parameters = SolverParameters())
   {
     unsigned int                        runs = 0, failures = 0;
     std::map<std::string, unsigned int> statuses;
@@ -40,7 +46,7 @@ namespace
          all_methods(problem.n_constrained() < problem.size()))
       {
         Vector       u;
-        const Report report = solve_with(problem, method, u);
+        const Report report = solve_with(problem, method, u, -1, parameters);
         ++runs;
         ++statuses[to_string(report.status)];
         if (!verdict(report, u))
@@ -157,6 +163,29 @@ main()
                (u - expected).cwiseProduct(root).lpNorm<Eigen::Infinity>() <=
                  1e-7 * expected.cwiseProduct(root).lpNorm<Eigen::Infinity>();
       });
+  }
+
+  // 6. A = I, b = (1e10, 1e-3, -1e-3), u >= 0: u = (1e10, 1e-3, 0).
+  {
+    DenseMatrix A = DenseMatrix::Identity(3, 3);
+    Vector      b(3);
+    b << 1e10, 1e-3, -1e-3;
+    const Problem problem = make_problem(A, b, {0, 1, 2}, {0, 0, 0});
+    const auto    right   = [](const Report &report, const Vector &u) {
+      return !report.converged() || (std::abs(u[0] - 1e10) <= 1e-8 * 1e10 &&
+                                     std::abs(u[1] - 1e-3) <= 1e-8 * 1e-3 &&
+                                     std::abs(u[2]) <= 1e-8 * 1e-3);
+    };
+    every_method("loads differing by 1e13: converged only with each unknown "
+                 "right against its own load",
+                 problem,
+                 right);
+    SolverParameters without_projection;
+    without_projection.projection = false;
+    every_method("the same without the projection step",
+                 problem,
+                 right,
+                 without_projection);
   }
 
   // 4. An indefinite A (eigenvalues 3 and -1).
