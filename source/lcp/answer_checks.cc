@@ -116,60 +116,6 @@ namespace unilateral::lcp
     return report.converged();
   }
 
-  std::string
-  componentwise_violation(const Problem &problem,
-                          const double   kkt_tolerance,
-                          const Vector  &u)
-  {
-    if (u.size() != problem.size())
-      return "";
-    const Vector lambda = problem.A * u - problem.b;
-    Vector       forces = problem.b.cwiseAbs();
-    for (Index j = 0; j < problem.A.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-        forces[it.row()] += std::abs(it.value() * u[j]);
-    Vector       residual      = lambda.cwiseAbs();
-    Vector       slack         = Vector::Constant(u.size(), 0.0);
-    const double mean_diagonal = diagonal_scale(problem.A);
-    for (Index k = 0; k < problem.n_constrained(); ++k)
-      {
-        const Index  i = problem.constrained[k];
-        const double stiffness =
-          problem.A.coeff(i, i) > 0 ? problem.A.coeff(i, i) : mean_diagonal;
-        slack[i]    = u[i] - problem.lower_bound[k];
-        residual[i] = std::max({-lambda[i],
-                                -slack[i] * stiffness,
-                                std::min(slack[i] * stiffness, lambda[i])});
-      }
-    // Beyond round-off of the row's own sum.
-    const double allowed =
-      kkt_tolerance + 100 * std::numeric_limits<double>::epsilon();
-    Index  worst          = -1;
-    double worst_relative = 0;
-    for (Index i = 0; i < u.size(); ++i)
-      if (residual[i] > allowed * forces[i])
-        {
-          const double relative = forces[i] > 0 ?
-                                    residual[i] / forces[i] :
-                                    std::numeric_limits<double>::infinity();
-          if (worst < 0 || relative > worst_relative)
-            {
-              worst          = i;
-              worst_relative = relative;
-            }
-        }
-    if (worst < 0)
-      return "";
-    std::ostringstream message;
-    message << std::setprecision(3) << "unknown " << worst + 1
-            << " (counted from 1) is off by " << worst_relative
-            << " of its own row's forces |b_i| + (|A| |u|)_i (slack "
-            << slack[worst] << ", multiplier " << lambda[worst]
-            << "), which the relative KKT residuals, measured against the "
-               "largest force, do not see";
-    return message.str();
-  }
-
   void
   check_finite(const Problem &problem, const Solution &solution, Report &report)
   {

@@ -29,23 +29,6 @@ namespace unilateral::lcp
   passes_checks(const Problem &problem, double kkt_tolerance, const Vector &u);
 
   /**
-   * Each index's own residual against its own row's forces |b_i| +
-   * (|A| |u|)_i: stationarity |lambda_i| off S, and on S a negative
-   * multiplier, a slack below zero, or min(slack A_ii, lambda_i), both
-   * nonzero. The relative KKT residuals measure against the largest force;
-   * an interior-point answer kept without the projection step can pass
-   * them with a contact a thousandth off where the loads differ by powers
-   * of ten (a review: A = I, b = (1e10, 1e-3, -1e-3), u_3 = 1.9e-6 where
-   * the answer is 0). Exact answers pass by construction (each index at its
-   * bound or with its multiplier at round-off). Returns a description of
-   * the worst index where it exceeds @p kkt_tolerance, empty otherwise.
-   */
-  std::string
-  componentwise_violation(const Problem &problem,
-                          double         kkt_tolerance,
-                          const Vector  &u);
-
-  /**
    * @name The checks of assess_answer
    * Each leaves a report that is not 'converged' as it is.
    */
