@@ -239,6 +239,29 @@ main()
                     << "\n";
         }
     }
+    // A degenerate index (zero slack and zero force at the answer u =
+    // (1, 0, 0)): PDPC's predictor landed the third contact exactly on its
+    // bound, and the next Newton system divided by its zero slack (NaN
+    // after 45 iterations, hidden since by PDAS's verification). It must
+    // converge by itself.
+    {
+      Vector b_degenerate(3);
+      b_degenerate << 1, 0, -1;
+      const Report report = solve_with(make_problem(DenseMatrix::Identity(3, 3),
+                                                    b_degenerate,
+                                                    {0, 1, 2},
+                                                    {0, 0, 0}),
+                                       method("pdpc"),
+                                       u);
+      std::cout << "pdpc on A = I, b = (1, 0, -1): status "
+                << to_string(report.status)
+                << ", by itself: " << yes_no(report.solver == "pdpc")
+                << ", u = (1, 0, 0): "
+                << yes_no(u.size() == 3 &&
+                          (u - Vector::Unit(3, 0)).lpNorm<Eigen::Infinity>() <=
+                            1e-12)
+                << "\n";
+    }
     DenseMatrix A2(2, 2);
     A2 << 1, 0, 0, 0;
     Vector b2(2);

@@ -272,8 +272,9 @@ namespace unilateral::lcp
       double
       step(const double sigma)
       {
-        double ds_dlambda = 0;
-        double alpha_1 = 1, alpha_2 = 1;
+        double       ds_dlambda = 0;
+        const double unlimited  = std::numeric_limits<double>::infinity();
+        double       alpha_1 = unlimited, alpha_2 = unlimited;
         for (Index k = 0; k < n_c; ++k)
           {
             const double ds = du[problem.constrained[k]];
@@ -283,9 +284,14 @@ namespace unilateral::lcp
             if (dlambda[k] < 0)
               alpha_2 = std::min(alpha_2, -lambda[k] / dlambda[k]);
           }
-        double alpha = std::min(alpha_1, alpha_2);
-        if (alpha < 1)
-          alpha *= options.step_to_boundary;
+        // Shortened wherever a bound limits the full step, the full step
+        // too: a predictor that lands exactly on the boundary (alpha_1 = 1
+        // for a contact whose Newton step closes it exactly, as where A is
+        // diagonal) leaves a zero slack, and the next Newton system divides
+        // by it (a review: NaN after 45 iterations on A = I, b = (1, 0, -1)).
+        const double blocking = std::min(alpha_1, alpha_2);
+        double       alpha =
+          blocking <= 1 ? blocking * options.step_to_boundary : 1.0;
         if (ds_dlambda > 0)
           alpha = std::min(alpha, 0.99 * (1 - sigma) * gap / ds_dlambda);
         u += alpha * du;
