@@ -139,9 +139,21 @@ namespace unilateral::lcp
                               ""));
     }
 
-    /// The size line 'rows columns entries' after the header's comments:
-    /// three whole numbers and nothing else ("3 3 5.9" would otherwise
-    /// read as 5 entries).
+    /// A size line of exactly N whole numbers >= 0 and nothing else ("3 3
+    /// 5.9" would otherwise read as 5 entries); false if it is not one.
+    template <std::size_t N>
+    bool
+    parse_size_line(const std::string &line, std::array<long long, N> &size)
+    {
+      std::istringstream tokens(line);
+      std::string        token;
+      for (long long &number : size)
+        if (!(tokens >> token) || !parse_index(token, number) || number < 0)
+          return false;
+      return !(tokens >> token);
+    }
+
+    /// The size line 'rows columns entries' after the header's comments.
     std::array<long long, 3>
     read_size_line(std::istream      &in,
                    const std::string &file_name,
@@ -153,15 +165,8 @@ namespace unilateral::lcp
           ++line_number;
           if (is_comment_or_blank(line))
             continue;
-          std::istringstream         size_line(line);
-          std::array<std::string, 3> tokens;
-          std::array<long long, 3>   size{};
-          std::string                extra;
-          if (!(size_line >> tokens[0] >> tokens[1] >> tokens[2]) ||
-              (size_line >> extra) || !parse_index(tokens[0], size[0]) ||
-              !parse_index(tokens[1], size[1]) ||
-              !parse_index(tokens[2], size[2]) || size[0] < 0 || size[1] < 0 ||
-              size[2] < 0)
+          std::array<long long, 3> size{};
+          if (!parse_size_line(line, size))
             fail(file_name,
                  line_number,
                  "expected the size line 'rows columns entries' (three "
@@ -333,22 +338,19 @@ namespace unilateral::lcp
           {
             size_line_seen   = true;
             size_line_number = line_number;
-            std::istringstream size_line(line);
-            std::string        rows, columns, extra;
-            long long          n_columns = 0;
-            if (!(size_line >> rows >> columns) || (size_line >> extra) ||
-                !parse_index(rows, announced) ||
-                !parse_index(columns, n_columns) || announced < 0)
+            std::array<long long, 2> size{};
+            if (!parse_size_line(line, size))
               fail(file_name,
                    line_number,
                    "expected the size line 'rows 1' of a Matrix Market "
                    "array, found '" +
                      clipped(line) + "'");
-            if (n_columns != 1)
+            if (size[1] != 1)
               fail(file_name,
                    line_number,
-                   "the size line announces " + columns +
+                   "the size line announces " + std::to_string(size[1]) +
                      " columns; a vector is one column ('rows 1')");
+            announced = size[0];
             continue;
           }
         std::istringstream tokens(line);

@@ -55,6 +55,16 @@ namespace
   {
     return std::abs(value - expected) <= 1e-8 * std::abs(expected);
   }
+
+  /// Both converged, with the same centre deflection and contact set.
+  bool
+  same_answer(const Run &run, const Run &reference)
+  {
+    return run.report.converged() && reference.report.converged() &&
+           close(run.results().centre_deflection,
+                 reference.results().centre_deflection) &&
+           run.results().n_contact == reference.results().n_contact;
+  }
 } // namespace
 
 int
@@ -110,14 +120,7 @@ main()
       std::cout << "obstacle " << obstacle << " above, load " << force
                 << ", tnnmg: "
                 << (lifted.report.converged() ? "converged" : "not converged")
-                << ", as pdas: "
-                << (lifted.report.converged() && direct.report.converged() &&
-                        close(lifted.results().centre_deflection,
-                              direct.results().centre_deflection) &&
-                        lifted.results().n_contact ==
-                          direct.results().n_contact ?
-                      "yes" :
-                      "NO")
+                << ", as pdas: " << (same_answer(lifted, direct) ? "yes" : "NO")
                 << "\n";
     }
   {
@@ -139,14 +142,7 @@ main()
         std::cout << "1e-4 mm sheet on psi3, " << method << ": "
                   << (thin.report.converged() ? "converged" : "not converged")
                   << ", the 2 mm plate's centre deflection and contact set: "
-                  << (thin.report.converged() &&
-                          close(thin.results().centre_deflection,
-                                plate.results().centre_deflection) &&
-                          thin.results().n_contact ==
-                            plate.results().n_contact ?
-                        "yes" :
-                        "NO")
-                  << "\n";
+                  << (same_answer(thin, plate) ? "yes" : "NO") << "\n";
       }
   }
   // TNNMG's iterate went NaN on them (after 30 s, every finer level

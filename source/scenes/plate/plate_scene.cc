@@ -346,48 +346,36 @@ namespace unilateral::plate
   {
     // Elements far from square scale the unknowns apart by their own
     // ratio, whatever the units.
-    const Geometry &g      = parameters.geometry;
-    const double    h_x    = g.length_x / g.n_x;
-    const double    h_y    = g.length_y / g.n_y;
-    const double    aspect = std::max(h_x / h_y, h_y / h_x);
+    const Geometry    &g      = parameters.geometry;
+    const double       h_x    = g.length_x / g.n_x;
+    const double       h_y    = g.length_y / g.n_y;
+    const double       aspect = std::max(h_x / h_y, h_y / h_x);
+    std::ostringstream elongated;
+    elongated << std::setprecision(3) << "the elements are " << aspect
+              << " times longer than wide (" << h_x << " x " << h_y
+              << "): choose 'Plate/Geometry/Elements x' and 'Elements y' so "
+                 "that they are nearer square ("
+              << report.message << ")";
     // A multigrid iterate gone NaN on such elements: their shape first.
     if (report.status == lcp::Status::singular && aspect > 100 &&
         report.message.find("NaN or infinite") != std::string::npos)
-      {
-        std::ostringstream message;
-        message << std::setprecision(3) << "the elements are " << aspect
-                << " times longer than wide (" << h_x << " x " << h_y
-                << "): choose 'Plate/Geometry/Elements x' and 'Elements y' "
-                   "so that they are nearer square ("
-                << report.message << ")";
-        return message.str();
-      }
+      return elongated.str();
     // Only a factorisation's verdict (PDAS's "... is singular for the
     // active set"), not a method's numerical breakdown, which the status
     // names alike.
     if (report.status != lcp::Status::singular ||
         report.message.find("is singular") == std::string::npos)
       return Scene::failure_description(report);
+    const std::string judged =
+      "a factorisation judged the plate's stiffness singular, but a clamped "
+      "plate's is positive definite: its condition estimate (smallest to "
+      "largest pivot) fell below 1e-14, most likely because ";
     if (aspect > 100)
-      {
-        std::ostringstream message;
-        message << std::setprecision(3)
-                << "a factorisation judged the plate's stiffness singular, "
-                   "but a clamped plate's is positive definite: its "
-                   "condition estimate (smallest to largest pivot) fell "
-                   "below 1e-14, most likely because the elements are "
-                << aspect << " times longer than wide (" << h_x << " x " << h_y
-                << "): choose 'Plate/Geometry/Elements x' and 'Elements y' "
-                   "so that the elements are nearer square ("
-                << report.message << ")";
-        return message.str();
-      }
-    return "a factorisation judged the plate's stiffness singular, but a "
-           "clamped plate's is positive definite: its condition estimate "
-           "(smallest to largest pivot) fell below 1e-14, most likely because the "
-           "deflection, slope and twist unknowns differ in size by powers "
-           "of the element size, which lengths far from 1 in the plate's "
-           "units make extreme; give the lengths in units nearer the "
+      return judged + elongated.str();
+    return judged +
+           "the deflection, slope and twist unknowns differ in size by "
+           "powers of the element size, which lengths far from 1 in the "
+           "plate's units make extreme; give the lengths in units nearer the "
            "plate's size, with the modulus and the load converted alike (" +
            report.message + ")";
   }
