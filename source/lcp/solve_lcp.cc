@@ -503,8 +503,14 @@ namespace unilateral::lcp
       else if (check_report.status == Status::infeasible)
         {
           report.message = check_report.message + "; " + attempt.method->label +
-                           " had ended " + to_string(report.status);
+                           " had ended " + to_string(report.status) +
+                           " after " + quantity(report.iterations, "iteration");
           report.status = Status::infeasible;
+          // The proof is the checker's: so are the iterate it ends on, its
+          // method and its counts (the first method's are in the note).
+          solution      = check;
+          report.solver = check_report.solver;
+          report.take_counts_of(check_report);
         }
       else
         report.message += "; " + label + " found none either (" +

@@ -239,6 +239,19 @@ main()
                     << "\n";
         }
     }
+    // PDPC on the floating body pulled off: its Newton system turns
+    // singular, PDAS proves that there is no solution, and the summary is
+    // PDAS's (method, counts, iterate), with PDPC's count in the note.
+    {
+      const Report report =
+        solve_with(make_problem(A, b_off, {0}, {0}), method("pdpc"), u);
+      report_solver("pdpc, floating body pulled off", report);
+      std::cout << "  reported as PDAS's proof: "
+                << yes_no(report.solver == "pdas" &&
+                          report.message.find("PDPC had ended") !=
+                            std::string::npos)
+                << ", PDAS's iterations: " << report.iterations << "\n";
+    }
     // A degenerate index (zero slack and zero force at the answer u =
     // (1, 0, 0)): PDPC's predictor landed the third contact exactly on its
     // bound, and the next Newton system divided by its zero slack (NaN
