@@ -827,6 +827,13 @@ namespace unilateral::masonry
              "held by a support or a closed joint: " +
              structure + " has no equilibrium, or a block can move freely" +
              unused + " (" + report.message + ")";
+    // An answer that is not resolved, where something can move freely: the
+    // loads may drive it by less than the solver's proof of no solution
+    // needs (a block on a frictionless slope of 1e-5 degrees, a review).
+    if (!free_motions.empty())
+      return Scene::failure_description(report) + unused +
+             ": if the loads do any work along such a motion, " + structure +
+             " has no equilibrium";
     return Scene::failure_description(report);
   }
 
