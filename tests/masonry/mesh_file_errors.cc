@@ -4,6 +4,7 @@
 // one control, a mesh 1e4 from the origin, is read and solved.
 #include "../application_test_tools.h"
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -356,6 +357,60 @@ main()
     std::cout << "a Signorini gap of -1e-20 (zero rounded): exit code "
               << result.code << ", stderr empty: " << yes_no(result.err.empty())
               << "\n";
+  }
+  // A hexahedron whose top is twisted (y = 0.5 + 0.1 (2x - 1)(2z - 1), its
+  // corners 0.025 out of one plane), optionally with a second one on it
+  // (its own entity: a block of its own). Node-to-node contact needs flat
+  // faces, but before, every face had to be flat, a traction-free one too
+  // (a review: the intrados of a vault). Now refused only where touched:
+  // the control stands on its base, its weight the volume 0.5 exactly.
+  {
+    const auto twisted = [&](const bool second) {
+      return header +
+             "$PhysicalNames\n5\n2 101 \"left\"\n2 102 \"base\"\n"
+             "2 103 \"front\"\n2 105 \"top\"\n3 1 \"b\"\n"
+             "$EndPhysicalNames\n$Nodes\n" +
+             (second ? "12" : "8") +
+             "\n1 0 0 0\n2 1 0 0\n3 1 0.4 0\n4 0 0.6 0\n5 0 0 1\n6 1 0 1\n"
+             "7 1 0.6 1\n8 0 0.4 1\n" +
+             (second ? "9 0 1.6 0\n10 1 1.4 0\n11 1 1.6 1\n12 0 1.4 1\n" : "") +
+             "$EndNodes\n$Elements\n5" +
+             "\n1 3 2 102 102 1 2 6 5\n2 3 2 101 101 1 4 8 5\n"
+             "3 3 2 103 103 1 2 3 4\n" +
+             (second ? "" : "4 3 2 105 105 4 3 7 8\n") +
+             "5 5 2 1 1 1 2 3 4 5 6 7 8\n" +
+             (second ? "6 5 2 1 2 4 3 10 9 8 7 11 12\n" : "") +
+             "$EndElements\n";
+    };
+    const std::string supports =
+      "  set Dimension = 3\n  subsection Boundary conditions\n"
+      "    set Fixed =\n    set Normal displacement zero = left, front\n"
+      "    set Gravity = 1\n    set Signorini = base";
+    write("bad.msh", twisted(false));
+    write("twisted.prm",
+          "set Scene = masonry\nsubsection Output\n"
+          "  set Directory = results\n  set Write VTU = false\n"
+          "  set Progress = false\nend\nsubsection Masonry\n"
+          "  set Geometry = mesh file\n  set Mesh file = bad.msh\n" +
+            supports + "\n  end\nend\n");
+    const Result result = run({"twisted.prm"});
+    // summary.json: "base": {"force": [x, y, z], ...}.
+    const std::string summary = read("results/twisted/summary.json");
+    const std::size_t base    = summary.find("\"base\"");
+    const std::size_t force =
+      base == std::string::npos ? base : summary.find('[', base);
+    double y = 0;
+    if (force != std::string::npos)
+      y = std::stod(summary.substr(summary.find(',', force) + 1));
+    std::cout << "a block with a twisted traction-free top: exit code "
+              << result.code << ", base reaction = weight 0.5 to 1e-9: "
+              << yes_no(std::abs(y - 0.5) <= 1e-9) << "\n";
+    bad("a twisted face with a Signorini support",
+        twisted(false),
+        supports + ", top\n  end\n");
+    bad("a twisted face between two blocks",
+        twisted(true),
+        supports + "\n  end\n");
   }
   bad("a cell with no area",
       header + "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 3 0 0\n$EndNodes\n"

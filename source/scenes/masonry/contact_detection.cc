@@ -83,16 +83,48 @@ namespace unilateral::masonry
       dealii::Tensor<1, dim>    normal; ///< outward
       std::vector<unsigned int> nodes;
       double                    diameter;
+      /// How far its vertices lie out of one plane, where more than
+      /// flatness allows (0: flat). 3D only.
+      double warp = 0;
     };
 
+    /**
+     * Refuses a warped face where its normal matters: node-to-node contact
+     * (a joint, a roller, a Signorini support) constrains every node of a
+     * face along one normal, which a twisted face does not have. Elsewhere
+     * (a traction-free or loaded surface, a 'Fixed' one: the intrados of a
+     * vault meshed by hexahedra) a warped face is accepted. @p use names
+     * what needs the normal.
+     */
+    template <int dim>
+    [[noreturn]] void
+    refuse_warped(const FaceRecord<dim> &face, const std::string &use)
+    {
+      dealii::Point<dim> centre;
+      for (const auto &v : face.vertices)
+        centre += v / static_cast<double>(face.vertices.size());
+      std::ostringstream message;
+      message << "block " << face.block << " has a warped face centred at ("
+              << centre << ") with " << use << ": its vertices are "
+              << face.warp
+              << " out of one plane, and node-to-node contact constrains "
+                 "every node of a face along one normal, so it needs flat "
+                 "faces there; mesh that surface with planar "
+                 "quadrilaterals (warped faces are accepted only where "
+                 "nothing touches them)";
+      throw InputError(message.str());
+    }
+
     /// A unit normal from the face's vertices, pointing away from the
-    /// cell's centre; InputError for a degenerate or (3D) warped face.
+    /// cell's centre (a warped face's mean normal, its warp in @p warp);
+    /// InputError for a degenerate face.
     template <int dim>
     dealii::Tensor<1, dim>
     face_normal(const std::vector<dealii::Point<dim>> &v,
                 const dealii::Point<dim>              &cell_centre,
                 const unsigned int                     block,
-                const double                           tolerance)
+                const double                           tolerance,
+                double                                &warp)
     {
       dealii::Tensor<1, dim> n;
       if constexpr (dim == 2)
@@ -123,16 +155,10 @@ namespace unilateral::masonry
       dealii::Point<dim> centre;
       for (const auto &p : v)
         centre += p / static_cast<double>(v.size());
+      warp = 0;
       for (const auto &p : v)
         if (std::abs((p - centre) * n) > 1e-6 * size + tolerance)
-          {
-            std::ostringstream message;
-            message << "block " << block << " has a warped face at (" << p
-                    << "): its vertices are " << std::abs((p - centre) * n)
-                    << " out of one plane; node-to-node contact needs flat "
-                       "faces";
-            throw InputError(message.str());
-          }
+          warp = std::max(warp, std::abs((p - centre) * n));
       if ((centre - cell_centre) * n < 0)
         n = -n;
       return n;
@@ -389,12 +415,13 @@ namespace unilateral::masonry
           x += v / static_cast<double>(face.vertices.size());
         return x;
       };
-      // Every vertex of a within near of b's plane.
+      // Every vertex of a within near of b's plane (of b's mean plane,
+      // beyond the warp of either).
       const auto near_plane = [&](const FaceRecord<dim> &a,
                                   const FaceRecord<dim> &b) {
         const dealii::Point<dim> x = centre(b);
         for (const auto &v : a.vertices)
-          if (std::abs((v - x) * b.normal) > near)
+          if (std::abs((v - x) * b.normal) > near + a.warp + b.warp)
             return false;
         return true;
       };
@@ -433,6 +460,12 @@ namespace unilateral::masonry
                   a.normal * b.normal >= 0 || !near_plane(a, b) ||
                   !near_plane(b, a) || overlap(a, b) <= tolerance)
                 continue;
+              for (const FaceRecord<dim> *face : {&a, &b})
+                if (face->warp > 0)
+                  refuse_warped(*face,
+                                "a joint to block " +
+                                  std::to_string(face == &a ? b.block :
+                                                              a.block));
               const double angle = std::acos(
                 std::max(-1.0, std::min(1.0, -(a.normal * b.normal))));
               double distance = 0;
@@ -548,7 +581,8 @@ namespace unilateral::masonry
           record.normal   = face_normal<dim>(record.vertices,
                                            cell->center(),
                                            record.block,
-                                           tolerance);
+                                           tolerance,
+                                           record.warp);
           record.diameter = face->diameter();
           face_dofs.resize(fe.n_dofs_per_face(f));
           face->get_dof_indices(face_dofs);
@@ -666,6 +700,8 @@ namespace unilateral::masonry
                   c.held_support = static_cast<int>(index);
                   c.held_value   = value;
                 }
+              else if (faces[f].warp > 0)
+                refuse_warped(faces[f], "the support '" + support->name + "'");
               else if (support->kind == Kind::normal_zero)
                 {
                   c.rollers.add(faces[f].normal, c.roller_support.size());
@@ -932,6 +968,13 @@ namespace unilateral::masonry
                       std::max(faces[p.face].diameter, faces[q.face].diameter);
                 if (overlap <= tolerance)
                   continue;
+                for (const std::size_t f : {p.face, q.face})
+                  if (faces[f].warp > 0)
+                    refuse_warped(
+                      faces[f],
+                      "a joint to block " +
+                        std::to_string(
+                          faces[f == p.face ? q.face : p.face].block));
                 if (std::abs(distance) > tolerance)
                   {
                     std::ostringstream message;
