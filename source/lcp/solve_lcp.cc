@@ -129,6 +129,8 @@ namespace unilateral::lcp
       SolverParameters  parameters;
       /// The relative eps 'Regularisation = auto' means for this attempt.
       double auto_regularisation;
+      /// A hand-over that starts from the last attempt's iterate.
+      bool from_iterate = false;
     };
 
     // The method alone on @p problem as given.
@@ -374,6 +376,8 @@ namespace unilateral::lcp
                    from.auto_regularisation};
       next.parameters.method     = follow_up.method;
       next.parameters.projection = true;
+      next.from_iterate          = follow_up.from_iterate &&
+                          SolverRegistry::get(follow_up.method).warm_start;
       for (const auto &[entry, value] : follow_up.settings)
         next.parameters.set(entry, value);
       return next;
@@ -432,8 +436,9 @@ namespace unilateral::lcp
      * Run @p attempt and the attempts that continue it (next_attempt), one
      * after the other: a short loop, not a recursion. A retry starts from
      * the same start and its report replaces the failed one's (whose work
-     * and time are kept); a hand-over starts afresh, and its report carries
-     * the earlier iterations, work and times, and a note.
+     * and time are kept); a hand-over starts afresh (or from the last
+     * iterate, FollowUp::from_iterate), and its report carries the earlier
+     * iterations, work and times, and a note.
      */
     Report
     run_attempts(const Problem &problem,
@@ -449,7 +454,7 @@ namespace unilateral::lcp
         {
           const bool retry = next->method == attempt.method;
           if (!retry)
-            start = Solution();
+            start = next->from_iterate ? solution : Solution();
           solution            = start;
           Outcome       later = run_attempt(problem, *next, solution, progress);
           const Report &earlier = outcome.report;
@@ -461,7 +466,7 @@ namespace unilateral::lcp
               later.report.solver = earlier.solver;
               later.report.iterations += earlier.iterations;
               later.report.add_times(earlier,
-                                     attempt.method->name + " (cycled): ");
+                                     attempt.method->name + " (handed over): ");
               const std::string note =
                 earlier.message + " after " +
                 quantity(earlier.iterations, "iteration") +

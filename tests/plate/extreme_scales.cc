@@ -22,8 +22,21 @@
 // A failure line speaks of no "body" (a review, 2026-11-27: the solver
 // layer's causes for blocks, "some body is held by no active constraint",
 // "a body held by round-off", ended the plate's lines): a clamped plate's
-// stiffness is definite. 6. TNNMG stopped early by weak settings without
-// the projection step: its line says it stopped short.
+// stiffness is definite. 6. TNNMG stopped early by weak settings (its own
+// tolerance 1e-3) without the projection step: its line says it stopped
+// short.
+//  7. elements 2000 times longer than wide (4000 x 2): TNNMG's corrections
+//     stall at 9e-8 of |u| (round-off), where it ended 'converged' with
+//     KKT residuals of 2e-16, its energy 3.6e-4 above the minimum and a
+//     contact force 18 % off (a review); now it hands over to PDAS, and
+//     the answer is the interior point's (to 1e-10 in energy).
+//  8. an obstacle with a pole between the nodes of a 25 x 25 mesh, at a
+//     node of the 13 x 13 coarse mesh: refused, naming that node, by
+//     tnnmg's hierarchy and pdas's coarse-mesh start (a review); now solved
+//     as by the interior point, which builds no coarse mesh.
+//  9. one element: every node lies on the clamped edge, so the obstacle
+//     acts nowhere; the summary says so (a review: the plate went 23 mm
+//     through it without a word).
 #include "plate_runs.h"
 
 #include <cmath>
@@ -172,6 +185,65 @@ main()
         << "\n";
     }
   {
+    const std::string plate =
+      "subsection Geometry\n  set Elements x = 4000\n"
+      "  set Elements y = 2\nend\n"
+      "subsection Obstacle\n  set Function = psi3\nend\n";
+    const Run tnnmg = run_plate("stalled_tnnmg", plate, "tnnmg");
+    const Run ip    = run_plate("stalled_ip", plate, "interior_point");
+    std::cout << "elements 2000 times longer than wide, tnnmg: "
+              << unilateral::lcp::to_string(tnnmg.report.status)
+              << ", handed over to pdas: "
+              << (tnnmg.report.message.find("continued from the PDAS") !=
+                      std::string::npos ?
+                    "yes" :
+                    "NO")
+              << ", the interior point's energy (1e-10): "
+              << (ip.report.converged() &&
+                      std::abs(tnnmg.report.energy - ip.report.energy) <=
+                        1e-10 * std::abs(ip.report.energy) ?
+                    "yes" :
+                    "NO")
+              << "\n";
+  }
+  {
+    const std::string plate =
+      "subsection Geometry\n  set Elements x = 25\n"
+      "  set Elements y = 25\nend\n"
+      "subsection Obstacle\n  set Function = -1 + 1/(x - 100/13)\nend\n";
+    const Run ip = run_plate("pole_ip", plate, "interior_point");
+    for (const std::string method : {"tnnmg", "pdas"})
+      {
+        const Run pole = run_plate("pole_" + method, plate, method);
+        std::cout << "an obstacle with a pole at a coarse mesh's node, "
+                  << method << ": "
+                  << unilateral::lcp::to_string(pole.report.status)
+                  << ", the interior point's energy (1e-10): "
+                  << (ip.report.converged() &&
+                          std::abs(pole.report.energy - ip.report.energy) <=
+                            1e-10 * std::abs(ip.report.energy) ?
+                        "yes" :
+                        "NO")
+                  << "\n";
+      }
+  }
+  for (const std::string boundary : {"clamped", "fully clamped"})
+    {
+      const Run one =
+        run_plate("one_element",
+                  paper_configuration("steel", "psi3", "f1", 1, boundary),
+                  "pdas");
+      std::cout << "one element, " << boundary << ": "
+                << unilateral::lcp::to_string(one.report.status)
+                << ", says the obstacle acts "
+                << "nowhere: "
+                << (one.printed.find("so it acts nowhere") !=
+                        std::string::npos ?
+                      "yes" :
+                      "NO")
+                << "\n";
+    }
+  {
     const Run stopped =
       run_plate("stopped_short",
                 "subsection Geometry\n  set Elements x = 4\n"
@@ -181,7 +253,7 @@ main()
                 "tnnmg",
                 false,
                 "set Projection = false\nsubsection TNNMG\n"
-                "  set Correction reduction = 0.9\n"
+                "  set Tolerance = 1e-3\n  set Correction reduction = 0.9\n"
                 "  set Cycles per correction = 1\n  set Cycle = V\nend\n");
     const std::string line = stopped.scene->failure_description(stopped.report);
     std::cout << "weak tnnmg without projection: "

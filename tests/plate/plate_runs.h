@@ -25,6 +25,8 @@ namespace plate_runs
     /// The scene after its run: results(), nodal_values(), the mesh.
     std::unique_ptr<unilateral::plate::PlateScene> scene;
     unilateral::lcp::Report                        report;
+    /// What the run printed (its summary).
+    std::string printed;
 
     const unilateral::plate::PlateScene::Results &
     results() const
@@ -84,8 +86,9 @@ namespace plate_runs
     context.timer = &timer;
 
     Run run;
-    run.report = scene->run(context);
-    run.scene  = std::move(scene);
+    run.report  = scene->run(context);
+    run.scene   = std::move(scene);
+    run.printed = screen.str();
     return run;
   }
 

@@ -194,9 +194,11 @@ namespace unilateral::lcp
   {
     enum class Kind
     {
-      /// Continue with another method from its own start, in place of this
-      /// one (PDAS that cycles continues from the interior point): the
-      /// iterations and work of both count, the answer is the other's.
+      /// Continue with another method from its own start (or from this
+      /// one's iterate: from_iterate), in place of this one (PDAS that
+      /// cycles continues from the interior point; TNNMG stopped by
+      /// round-off, from PDAS): the iterations and work of both count, the
+      /// answer is the other's.
       hand_over,
       /// Check this method's outcome with another method (Graves' "no
       /// solution" with PDAS, PDAS's singular system with Graves): if that
@@ -213,6 +215,10 @@ namespace unilateral::lcp
     bool only_at_default_limit = false;
     /// The registered name of the method that follows.
     std::string method;
+    /// A hand-over that continues from this method's last iterate (where
+    /// it is near the answer, and the next method takes a start), not
+    /// from the next method's own start.
+    bool from_iterate = false;
     /// Options set for it, as "<subsection>/<entry>" and value.
     std::vector<std::pair<std::string, std::string>> settings;
   };

@@ -43,6 +43,7 @@ namespace unilateral::plate
     coarse_geometry.n_x          = (parameters.geometry.n_x + 1) / 2;
     coarse_geometry.n_y          = (parameters.geometry.n_y + 1) / 2;
     PlateScene coarse(coarse_parameters);
+    coarse.coarse_level = true;
     RunContext quiet; // the coarse levels' stages are this run's "solve"
     coarse.set_up(quiet);
     coarse.assemble(quiet);

@@ -176,6 +176,7 @@ namespace unilateral::plate
         Parameters coarse_parameters = parameters;
         coarse_parameters.geometry   = next;
         coarse.push_back(std::make_unique<PlateScene>(coarse_parameters));
+        coarse.back()->coarse_level = true;
         RunContext quiet;
         coarse.back()->set_up(quiet);
         geometry = next;

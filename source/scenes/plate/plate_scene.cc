@@ -148,6 +148,13 @@ namespace unilateral::plate
     for (const auto &[free, vertex] : interior_nodes)
       {
         const double psi = obstacle->value(vertices[vertex]);
+        // A coarser mesh's node that the user's mesh does not have (odd
+        // sides are halved rounded up): an obstacle infinite there (a
+        // pole between the plate's nodes, a review) leaves the node free
+        // on that mesh, which only gives a start; the plate's own mesh
+        // decides.
+        if (coarse_level && !std::isfinite(psi))
+          continue;
         if (!std::isfinite(psi))
           {
             std::ostringstream message;
@@ -165,6 +172,7 @@ namespace unilateral::plate
         lcp_problem.constrained.push_back(free);
         bound_vertex.push_back(vertex);
       }
+    lcp_problem.lower_bound.conservativeResize(lcp_problem.constrained.size());
   }
 
   // The clamped DOFs are zero, so F needs no lifting.
@@ -284,6 +292,15 @@ namespace unilateral::plate
         << "  |J| = " << plate_results.n_free
         << " free DOFs, |J1| = " << plate_results.n_bounds
         << " bounded nodes\n";
+    // A mesh of one element in a direction has every node on the clamped
+    // edge (a review: a 1 x 1 plate went 23 mm through the obstacle
+    // without a word).
+    if (obstacle != nullptr && plate_results.n_bounds == 0)
+      out
+        << "  note: no node of the mesh is off the clamped edge, and the "
+           "obstacle acts at nodes only, so it acts nowhere"
+        << (plate_results.n_free == 0 ? " (and every DOF is clamped)" : "")
+        << ": refine the mesh ('Plate/Geometry/Elements x' and 'Elements y')\n";
     print_solver_summary(out, lcp_problem, report);
     if (!coarse_levels.empty())
       {

@@ -197,6 +197,9 @@ namespace unilateral::plate
     /// assemble_system): 1 within a factor 1e3 of the paper's steel plate.
     double                                       unit = 1;
     std::unique_ptr<dealii::Function<2, double>> obstacle; ///< null: none
+    /// A coarser mesh that this plate builds for a start or a hierarchy:
+    /// its nodes are not the user's (see setup_system).
+    bool                                         coarse_level = false;
     std::unique_ptr<dealii::Function<2, double>> force;
 
     dealii::Triangulation<2> triangulation;
