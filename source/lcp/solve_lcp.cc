@@ -629,6 +629,11 @@ namespace unilateral::lcp
       report.message                      = reduced_report.message;
       report.take_counts_of(reduced_report);
       report.counters += reduced_report.counters;
+      // Its figures too: 'factorisation_ranks' where the reduced problem's
+      // factorisations ran over the ranks (a review: absent from
+      // summary.json, which then did not say so).
+      for (const auto &[name, value] : reduced_report.figures)
+        report.set_figure(name, value);
       report.add_times(reduced_report);
       PhaseTimer timer(report, "recover u_E");
       solution.u = schur->recover(reduced_solution.u);

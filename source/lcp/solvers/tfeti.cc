@@ -493,11 +493,25 @@ namespace unilateral::lcp
               "to 1e12 times ||P F P||)";
             return;
           case Smalbe::Outcome::outer_limit:
-          case Smalbe::Outcome::product_limit:
             report.status = Status::iteration_limit;
             report.message =
               "TFETI did not reach its tolerance in " +
-              std::to_string(smalbe.outer) + " outer iterations and " +
+              std::to_string(smalbe.outer) +
+              " outer iterations ('Solver/TFETI/Maximum outer iterations') "
+              "and " +
+              std::to_string(dual.products_with_F()) + " products with F";
+            return;
+          // Within an outer iteration: that one counts (a review: "in 0
+          // outer iterations" where the limit fell in the first).
+          case Smalbe::Outcome::product_limit:
+            report.status     = Status::iteration_limit;
+            report.iterations = smalbe.outer + 1;
+            report.message =
+              "TFETI reached its limit of " +
+              std::to_string(iteration_limit(100000)) +
+              " MPRGP steps ('Solver/Maximum iterations') in outer "
+              "iteration " +
+              std::to_string(smalbe.outer + 1) + ", after " +
               std::to_string(dual.products_with_F()) + " products with F";
             return;
         }
