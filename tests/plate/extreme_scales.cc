@@ -69,6 +69,17 @@ namespace
     return std::abs(value - expected) <= 1e-8 * std::abs(expected);
   }
 
+  /// The reference converged, and the run's energy is its to 1e-10.
+  const char *
+  same_energy(const Run &run, const Run &reference)
+  {
+    return reference.report.converged() &&
+               std::abs(run.report.energy - reference.report.energy) <=
+                 1e-10 * std::abs(reference.report.energy) ?
+             "yes" :
+             "NO";
+  }
+
   /// Both converged, with the same centre deflection and contact set.
   bool
   same_answer(const Run &run, const Run &reference)
@@ -199,12 +210,7 @@ main()
                     "yes" :
                     "NO")
               << ", the interior point's energy (1e-10): "
-              << (ip.report.converged() &&
-                      std::abs(tnnmg.report.energy - ip.report.energy) <=
-                        1e-10 * std::abs(ip.report.energy) ?
-                    "yes" :
-                    "NO")
-              << "\n";
+              << same_energy(tnnmg, ip) << "\n";
   }
   {
     const std::string plate =
@@ -219,12 +225,7 @@ main()
                   << method << ": "
                   << unilateral::lcp::to_string(pole.report.status)
                   << ", the interior point's energy (1e-10): "
-                  << (ip.report.converged() &&
-                          std::abs(pole.report.energy - ip.report.energy) <=
-                            1e-10 * std::abs(ip.report.energy) ?
-                        "yes" :
-                        "NO")
-                  << "\n";
+                  << same_energy(pole, ip) << "\n";
       }
   }
   for (const std::string boundary : {"clamped", "fully clamped"})
