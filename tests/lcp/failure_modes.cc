@@ -252,6 +252,26 @@ main()
                             std::string::npos)
                 << ", PDAS's iterations: " << report.iterations << "\n";
     }
+    // Held at a bound 1e6 away (u = (1e6, 1e6, 10), lambda = 0: solved
+    // exactly): the answer's motion has no stiffness and the loads' work
+    // comes from its elastic part, which the proof of no solution from an
+    // answer's own motion took for a runaway (a review).
+    {
+      DenseMatrix A_far(3, 3);
+      A_far << 1, -1, 0, -1, 1, 0, 0, 0, 1e-6;
+      Vector b_far(3);
+      b_far << 0, 0, 1e-5;
+      SolverParameters loose;
+      loose.kkt_tolerance = 1e-4;
+      const Report report = solve_with(
+        make_problem(A_far, b_far, {0}, {1e6}), method("pdas"), u, -1, loose);
+      std::cout << "pdas, a body held 1e6 away, KKT tolerance 1e-4: status "
+                << to_string(report.status) << ", u = (1e6, 1e6, 10): "
+                << yes_no(u.size() == 3 && std::abs(u[0] - 1e6) <= 1e-6 &&
+                          std::abs(u[1] - 1e6) <= 1e-6 &&
+                          std::abs(u[2] - 10) <= 1e-9)
+                << "\n";
+    }
     // A degenerate index (zero slack and zero force at the answer u =
     // (1, 0, 0)): PDPC's predictor landed the third contact exactly on its
     // bound, and the next Newton system divided by its zero slack (NaN
