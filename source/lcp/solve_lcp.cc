@@ -483,7 +483,8 @@ namespace unilateral::lcp
               const std::string note =
                 earlier.message + " after " +
                 quantity(earlier.iterations, "iteration") +
-                "; continued from the " + next->method->label + "'s answer";
+                "; handed over to " + next->method->label +
+                ", whose answer is given";
               later.report.message = later.report.message.empty() ?
                                        note :
                                        note + "; " + later.report.message;

@@ -205,7 +205,7 @@ main()
     std::cout << "elements 2000 times longer than wide, tnnmg: "
               << unilateral::lcp::to_string(tnnmg.report.status)
               << ", handed over to pdas: "
-              << (tnnmg.report.message.find("continued from the PDAS") !=
+              << (tnnmg.report.message.find("handed over to PDAS") !=
                       std::string::npos ?
                     "yes" :
                     "NO")

@@ -31,6 +31,7 @@
  * makes it exact on the Problem, starting from that active set.
  */
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/text.h>
 #include <unilateral/lcp/dual_operators.h>
 #include <unilateral/lcp/mprgp.h>
 #include <unilateral/lcp/solver.h>
@@ -493,13 +494,12 @@ namespace unilateral::lcp
               "to 1e12 times ||P F P||)";
             return;
           case Smalbe::Outcome::outer_limit:
-            report.status = Status::iteration_limit;
-            report.message =
-              "TFETI did not reach its tolerance in " +
-              std::to_string(smalbe.outer) +
-              " outer iterations ('Solver/TFETI/Maximum outer iterations') "
-              "and " +
-              std::to_string(dual.products_with_F()) + " products with F";
+            report.status  = Status::iteration_limit;
+            report.message = "TFETI did not reach its tolerance in " +
+                             quantity(smalbe.outer, "outer iteration") +
+                             " ('Solver/TFETI/Maximum outer iterations') and " +
+                             quantity(dual.products_with_F(), "product") +
+                             " with F (its set-up's included)";
             return;
           // Within an outer iteration: that one counts (a review: "in 0
           // outer iterations" where the limit fell in the first).
@@ -512,7 +512,8 @@ namespace unilateral::lcp
               " MPRGP steps ('Solver/Maximum iterations') in outer "
               "iteration " +
               std::to_string(smalbe.outer + 1) + ", after " +
-              std::to_string(dual.products_with_F()) + " products with F";
+              quantity(dual.products_with_F(), "product") +
+              " with F (its set-up's included)";
             return;
         }
     }

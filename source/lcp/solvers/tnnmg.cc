@@ -646,8 +646,10 @@ namespace unilateral::lcp
                   << " of |u| on the finest level, above 'Solver/KKT "
                      "tolerance' = "
                   << parameters.kkt_tolerance
-                  << ": round-off bounds its answer there (A is "
-                     "ill-conditioned: elements far longer than wide?)";
+                  << ": round-off bounds its answer there (A "
+                     "ill-conditioned by elements far longer than wide, or "
+                     "a KKT tolerance below what double precision "
+                     "resolves)";
           report.status  = Status::inaccurate;
           report.message = message.str();
         }
