@@ -10,7 +10,6 @@
 #include <unilateral/lcp/unbounded_direction.h>
 
 #include <algorithm>
-#include <cmath>
 #include <iomanip>
 #include <limits>
 #include <memory>
@@ -101,8 +100,9 @@ namespace unilateral::lcp
      * KKT residuals pass, and which the checks can only call unresolvable
      * (or, at a tolerance raised as they advise, converged). Its motion is
      * then the runaway itself, and held to the same proof as PDAS's
-     * (unbounded_direction), where it is a million times as far as any
-     * bound: a motion the bounds set is no runaway.
+     * (unbounded_direction), whose work must come from where A does not
+     * resist the motion: a body held far away by a bound, its loads on a
+     * soft spring, is no runaway.
      */
     void
     prove_unbounded_from_answer(const Problem  &problem,
@@ -110,17 +110,6 @@ namespace unilateral::lcp
                                 Report         &report)
     {
       if (report.status == Status::infeasible || problem.definite)
-        return;
-      // The runaway, not a motion the bounds set: a body held at a bound
-      // 1e6 away has moved by 1e6 with no stiffness along that motion, and
-      // the loads' work can come from its elastic part (a review: A = [1 -1
-      // 0; -1 1 0; 0 0 1e-6], b = (0, 0, 1e-5), u_1 >= 1e6, solved exactly
-      // and called 'no solution').
-      double bounds = 0;
-      for (const double l : problem.lower_bound)
-        if (std::isfinite(l))
-          bounds = std::max(bounds, std::abs(l));
-      if (!(solution.u.lpNorm<Eigen::Infinity>() > 1e6 * bounds))
         return;
       const std::string proof = unbounded_direction(problem, solution.u);
       if (proof.empty())

@@ -14,6 +14,8 @@ namespace unilateral::lcp
     constexpr double sign_round_off = 1e-8;
     /// The loads' work along a proof, relative to |b| |d|, at least.
     constexpr double least_drive = 1e-6;
+    /// A force (A d)_i beyond this of (|A| |d|)_i resists the motion there.
+    constexpr double resisting_force = 1e-8;
   } // namespace
 
   std::string
@@ -37,11 +39,33 @@ namespace unilateral::lcp
         direction[i] = std::max(direction[i], 0.0);
       }
     const double length    = direction.norm();
-    const double stiffness = direction.dot(problem.A * direction);
+    const Vector force     = problem.A * direction;
+    const double stiffness = direction.dot(force);
     const double drive     = problem.b.dot(direction);
-    if (!(stiffness <=
-          null_stiffness * diagonal_scale(problem.A) * length * length) ||
+    // Against A's own diagonal along the motion, not its mean: a stiff
+    // unknown beside a soft one is not round-off (a review: A = diag(1,
+    // 1e-16), definite, was said to have no solution for b = (1, 1)).
+    // Floored at round-off of the mean, for rows whose diagonal is zero.
+    const double own_diagonal =
+      std::max(direction.cwiseAbs2().dot(problem.A.diagonal().cwiseAbs()),
+               1e-16 * diagonal_scale(problem.A) * length * length);
+    if (!(stiffness <= null_stiffness * own_diagonal) ||
         !(drive >= least_drive * loads * length))
+      return "";
+    // The loads' work must come from where A does not resist the motion:
+    // a motion mostly free can carry a small part that A resists, and the
+    // work done there proves nothing (a review: a body held 1e6 away by a
+    // bound, its loads on a soft spring, solved exactly, was said to have
+    // no solution; scaled, so was any guard on the bounds' size).
+    Vector rounding = Vector::Zero(problem.size());
+    for (Index j = 0; j < problem.size(); ++j)
+      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
+        rounding[it.row()] += std::abs(it.value() * direction[j]);
+    double resisted_work = 0;
+    for (Index i = 0; i < problem.size(); ++i)
+      if (std::abs(force[i]) > resisting_force * rounding[i])
+        resisted_work += std::abs(problem.b[i] * direction[i]);
+    if (resisted_work > 1e-3 * drive)
       return "";
     // Moved: beyond round-off of the largest entry (one), as the free
     // motion's subset in PDAS (a review: counting every nonzero named 151
@@ -58,9 +82,8 @@ namespace unilateral::lcp
                     std::to_string(problem.size()) + " unknowns")
             << " away along a motion that neither A nor any bound "
                "resists (its stiffness "
-            << std::max(stiffness, 0.0) /
-                 (diagonal_scale(problem.A) * length * length)
-            << " of A's mean diagonal, the loads' work along it "
+            << std::max(stiffness, 0.0) / own_diagonal
+            << " of A's diagonal along it, the loads' work along it "
             << drive / (loads * length)
             << " of |b| |d|): the energy falls without bound";
     return message.str();

@@ -172,7 +172,7 @@ main()
               << ", u = 0: " << yes_no(u.size() == n && u.isZero(0)) << "\n";
     // Held by a spring, the chain has a solution, however far: no proof.
     // Of 1e-2, PDAS finds it; of 4e-10 (a stiffness along the motion of
-    // 1e-13 of A's mean diagonal, a hundred times the proof's bound) it is
+    // 1e-13 of A's diagonal along it, a hundred times the proof's bound) it is
     // beyond double precision, and PDAS must not claim there is none.
     const Report held = solve_with(chain(1e-2, 1), method("pdas"), u);
     std::cout << "pdas, the chain pushed off but held by a spring of 1e-2: "
@@ -270,6 +270,23 @@ main()
                 << yes_no(u.size() == 3 && std::abs(u[0] - 1e6) <= 1e-6 &&
                           std::abs(u[1] - 1e6) <= 1e-6 &&
                           std::abs(u[2] - 10) <= 1e-9)
+                << "\n";
+    }
+    // A definite A whose diagonal spans 1e16: the soft unknown is no free
+    // motion (its stiffness is its own diagonal), though 1e-16 is below
+    // round-off of the mean diagonal, which the proof of no solution
+    // measured it against (a review: 'no solution', exit 2).
+    {
+      DenseMatrix A_soft(2, 2);
+      A_soft << 1, 0, 0, 1e-16;
+      const Report report =
+        solve_with(make_problem(A_soft, Vector::Ones(2), {0}, {0}),
+                   method("pdas"),
+                   u);
+      std::cout << "pdas, A = diag(1, 1e-16), b = (1, 1): status "
+                << to_string(report.status) << ", u = (1, 1e16): "
+                << yes_no(u.size() == 2 && std::abs(u[0] - 1) <= 1e-12 &&
+                          std::abs(u[1] - 1e16) <= 1e4)
                 << "\n";
     }
     // A degenerate index (zero slack and zero force at the answer u =

@@ -18,13 +18,15 @@ namespace unilateral::lcp
    * @p direction is a candidate from a singular system, zero on the
    * indices held at their bounds: the motion the loads drive there
    * (ActiveSetSystem::near_null_direction). It is taken as a proof only where
-   * it is one in double precision: A's stiffness along it below 1e-15 of A's
-   * mean diagonal d (an A regularised for floating bodies, by at least
-   * 1e-14 d, never qualifies; the Schur complement's round-off shift
-   * n_c eps d, below that for n_c <= 4, does, where the LCP without it has
-   * no solution either), its entries on the constrained indices of one
-   * sign to 1e-8 of its largest, and the loads' work along it at least
-   * 1e-6 of |b| |d|: the minimiser along such a ray, if A had one, would
+   * it is one in double precision: A's stiffness along it, d^T A d, below
+   * 1e-15 of A's diagonal along it, sum A_ii d_i^2 (a proof for A plus a
+   * regularisation, or plus the Schur complement's round-off shift n_c
+   * eps, is one for A too: A is stiffer along no direction), its entries
+   * on the constrained indices of one sign to 1e-8 of its largest, and the
+   * loads' work along it at least 1e-6 of |b| |d|, at most 1e-3 of it done
+   * where A resists the motion (a force (A d)_i beyond 1e-8 of
+   * (|A| |d|)_i: a soft part of an otherwise free motion proves nothing):
+   * the minimiser along such a ray, if A had one, would
    * lie at least 1e9 |b| / d away (on the paper's walls a millionfold of
    * the elastic displacements, as a review measured). Returns a
    * description for the failure message, empty where @p direction proves
