@@ -464,6 +464,18 @@ main()
           "  set Dimension = 3\n");
     }
   }
+  // Two hexahedra whose faces cross like a '+' (a block on a strip): the
+  // faces overlap, but no node of either lies on the other, so no joint
+  // was made and the block passed through the strip (a review).
+  bad("faces crossing like a '+'",
+      header + "$PhysicalNames\n1\n2 7 \"base\"\n$EndPhysicalNames\n"
+               "$Nodes\n16\n1 -1 0 -1\n2 1 0 -1\n3 1 1 -1\n4 -1 1 -1\n"
+               "5 -1 0 1\n6 1 0 1\n7 1 1 1\n8 -1 1 1\n"
+               "9 0.3 -1 -1.5\n10 0.7 -1 -1.5\n11 0.7 0 -1.5\n12 0.3 0 -1.5\n"
+               "13 0.3 -1 4\n14 0.7 -1 4\n15 0.7 0 4\n16 0.3 0 4\n$EndNodes\n"
+               "$Elements\n3\n1 3 2 7 7 9 10 14 13\n2 5 2 1 1 1 2 3 4 5 6 7 8\n"
+               "3 5 2 1 2 9 10 11 12 13 14 15 16\n$EndElements\n",
+      "  set Dimension = 3\n");
   bad("a cell with no area",
       header + "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 3 0 0\n$EndNodes\n"
                "$Elements\n1\n1 3 2 1 1 1 2 3 4\n$EndElements\n");

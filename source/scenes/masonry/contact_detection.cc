@@ -1175,8 +1175,23 @@ namespace unilateral::masonry
                          {key.first == lower ? n : -n, p.face, q.face}});
                     }
                 };
+                const std::size_t pairs_before = joint_pairs.size();
                 match(fp, fq, polygon[*it], true);
                 match(fq, fp, polygon[i], false);
+                // Overlapping, yet no node of either on the other (faces
+                // crossing like a '+'): no constraint would hold them, and
+                // the blocks would pass through each other (a review).
+                if (joint_pairs.size() == pairs_before)
+                  throw InputError(
+                    "non-matching nodes on the face shared by blocks " +
+                    std::to_string(fp.block) + " and " +
+                    std::to_string(fq.block) + " near " +
+                    describe_point<dim>(as_array<dim>(dealii::Tensor<1, dim>(
+                                          fp.cell->face(fp.face_no)->center())),
+                                        fp.block) +
+                    ": the faces overlap, but no node of either lies on the "
+                    "other; node-to-node contact needs matching nodes, so "
+                    "mesh the blocks' shared faces alike");
               }
           }
       }
