@@ -331,6 +331,110 @@ namespace unilateral::masonry
     }
 
     /**
+     * Boundary faces on a grid of cells as large as the median face (or
+     * 1/64 of the largest: a huge face then spans a bounded number of
+     * cells, and a cell holds few small faces), each face in every cell its
+     * box (grown by near) meets; a face looks for others in the cells its
+     * own box meets.
+     */
+    template <int dim>
+    class FaceGrid
+    {
+    public:
+      /// The faces for which @p included is true, on the grid.
+      template <typename Predicate>
+      FaceGrid(const std::vector<FaceRecord<dim>> &faces,
+               const double                        near,
+               const Predicate                    &included)
+        : near(near)
+      {
+        std::vector<double> diameters;
+        for (const FaceRecord<dim> &face : faces)
+          diameters.push_back(face.diameter);
+        spacing = near;
+        if (!diameters.empty())
+          {
+            std::nth_element(diameters.begin(),
+                             diameters.begin() + diameters.size() / 2,
+                             diameters.end());
+            spacing = std::max(
+              {near,
+               diameters[diameters.size() / 2],
+               *std::max_element(diameters.begin(), diameters.end()) / 64});
+          }
+        for (std::size_t f = 0; f < faces.size(); ++f)
+          if (included(f))
+            for_each_cell(box(faces[f]),
+                          [&](const Cell &cell) { cells[cell].push_back(f); });
+      }
+
+      bool
+      empty() const
+      {
+        return cells.empty();
+      }
+
+      /// action(f) for every face f on the grid near @p face (a face may
+      /// come more than once).
+      template <typename Action>
+      void
+      for_each_near(const FaceRecord<dim> &face, const Action &action) const
+      {
+        for_each_cell(box(face), [&](const Cell &cell) {
+          const auto list = cells.find(cell);
+          if (list != cells.end())
+            for (const std::size_t f : list->second)
+              action(f);
+        });
+      }
+
+    private:
+      using Cell = std::array<long, dim>;
+
+      std::array<Cell, 2>
+      box(const FaceRecord<dim> &face) const
+      {
+        std::array<Cell, 2> range;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            double lo = std::numeric_limits<double>::max(), hi = -lo;
+            for (const auto &v : face.vertices)
+              {
+                lo = std::min(lo, v[c]);
+                hi = std::max(hi, v[c]);
+              }
+            range[0][c] = std::lround(std::floor((lo - near) / spacing));
+            range[1][c] = std::lround(std::floor((hi + near) / spacing));
+          }
+        return range;
+      }
+
+      template <typename Action>
+      static void
+      for_each_cell(const std::array<Cell, 2> &range, const Action &action)
+      {
+        Cell cell = range[0];
+        while (true)
+          {
+            action(cell);
+            unsigned int c = 0;
+            for (; c < dim; ++c)
+              {
+                if (++cell[c] <= range[1][c])
+                  break;
+                cell[c] = range[0][c];
+              }
+            if (c == dim)
+              return;
+          }
+      }
+
+      double                                   near;
+      double                                   spacing;
+      std::map<Cell, std::vector<std::size_t>> cells;
+    };
+
+    /**
      * Refuses faces of two blocks that nearly coincide but are not
      * parallel: each face's vertices within @p near of the other's plane,
      * facing each other and overlapping by more than @p tolerance, their
@@ -351,61 +455,10 @@ namespace unilateral::masonry
                         const double                        cell_size,
                         const double                        direction_tolerance)
     {
-      // The faces without a joint on a grid of cells as large as the
-      // median face (or 1/64 of the largest: a huge face then spans a
-      // bounded number of cells, and a cell holds few small faces), each in
-      // every cell its box (grown by near) meets; then every face looks in
-      // the cells its own box meets.
-      if (faces.empty())
-        return;
-      std::vector<double> diameters;
-      for (const FaceRecord<dim> &face : faces)
-        diameters.push_back(face.diameter);
-      std::nth_element(diameters.begin(),
-                       diameters.begin() + diameters.size() / 2,
-                       diameters.end());
-      const double spacing =
-        std::max({near,
-                  diameters[diameters.size() / 2],
-                  *std::max_element(diameters.begin(), diameters.end()) / 64});
-      using Cell     = std::array<long, dim>;
-      const auto box = [&](const FaceRecord<dim> &face) {
-        std::array<Cell, 2> range;
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            double lo = std::numeric_limits<double>::max(), hi = -lo;
-            for (const auto &v : face.vertices)
-              {
-                lo = std::min(lo, v[c]);
-                hi = std::max(hi, v[c]);
-              }
-            range[0][c] = std::lround(std::floor((lo - near) / spacing));
-            range[1][c] = std::lround(std::floor((hi + near) / spacing));
-          }
-        return range;
-      };
-      const auto for_each_cell = [](const std::array<Cell, 2> &range,
-                                    const auto                &action) {
-        Cell cell = range[0];
-        while (true)
-          {
-            action(cell);
-            unsigned int c = 0;
-            for (; c < dim; ++c)
-              {
-                if (++cell[c] <= range[1][c])
-                  break;
-                cell[c] = range[0][c];
-              }
-            if (c == dim)
-              return;
-          }
-      };
-      std::map<Cell, std::vector<std::size_t>> unjoined;
-      for (std::size_t f = 0; f < faces.size(); ++f)
-        if (!joined[f])
-          for_each_cell(box(faces[f]),
-                        [&](const Cell &cell) { unjoined[cell].push_back(f); });
+      // The faces without a joint on a grid; every face looks for them.
+      const FaceGrid<dim> unjoined(faces, near, [&](const std::size_t f) {
+        return !joined[f];
+      });
       if (unjoined.empty())
         return;
 
@@ -446,57 +499,47 @@ namespace unilateral::masonry
       };
 
       for (std::size_t p = 0; p < faces.size(); ++p)
-        for_each_cell(box(faces[p]), [&](const Cell &cell) {
-          const auto list = unjoined.find(cell);
-          if (list == unjoined.end())
+        unjoined.for_each_near(faces[p], [&](const std::size_t q) {
+          const FaceRecord<dim> &a = faces[p], &b = faces[q];
+          // Faces within the tolerance of each other were compared
+          // for a joint (in one class or in neighbouring ones).
+          if (a.block == b.block || face_class[p] == face_class[q] ||
+              within_tolerance(a.normal, -b.normal, direction_tolerance) ||
+              a.normal * b.normal >= 0 || !near_plane(a, b) ||
+              !near_plane(b, a) || overlap(a, b) <= tolerance)
             return;
-          for (const std::size_t q : list->second)
-            {
-              const FaceRecord<dim> &a = faces[p], &b = faces[q];
-              // Faces within the tolerance of each other were compared
-              // for a joint (in one class or in neighbouring ones).
-              if (a.block == b.block || face_class[p] == face_class[q] ||
-                  within_tolerance(a.normal, -b.normal, direction_tolerance) ||
-                  a.normal * b.normal >= 0 || !near_plane(a, b) ||
-                  !near_plane(b, a) || overlap(a, b) <= tolerance)
-                continue;
-              for (const FaceRecord<dim> *face : {&a, &b})
-                if (face->warp > 0)
-                  refuse_warped(*face,
-                                "a joint to block " +
-                                  std::to_string(face == &a ? b.block :
-                                                              a.block));
-              const double angle = std::acos(
-                std::max(-1.0, std::min(1.0, -(a.normal * b.normal))));
-              double distance = 0;
-              for (const auto &v : b.vertices)
-                distance =
-                  std::max(distance, std::abs((v - centre(a)) * a.normal));
-              // Joined if their normals share a class (4 tau) and their
-              // nodes coincide (tau of the smallest cell).
-              const double needed =
-                std::max(angle / 4, distance / cell_size) * 1.5;
-              std::ostringstream message;
-              message << "blocks " << a.block << " and " << b.block
-                      << " have faces that nearly coincide (near "
-                      << describe_point<dim>(
-                           as_array<dim>(dealii::Tensor<1, dim>(centre(a))),
-                           a.block)
-                      << ", at most " << distance
-                      << " apart) but are not parallel: their normals differ "
-                         "by "
-                      << angle << " rad, more than the " << direction_tolerance
-                      << " of a joint (4 times 'Masonry/Coincidence "
-                         "tolerance'), so no joint would be made between "
-                         "them; make the faces coincide (a mesh written with "
-                         "few significant digits: write more)";
-              if (needed <= 1e-3)
-                message << ", raise 'Masonry/Coincidence tolerance' to "
-                        << needed << " or more if they are meant to touch";
-              message << ", or move them further apart (more than " << near
-                      << ")";
-              throw InputError(message.str());
-            }
+          for (const FaceRecord<dim> *face : {&a, &b})
+            if (face->warp > 0)
+              refuse_warped(*face,
+                            "a joint to block " +
+                              std::to_string(face == &a ? b.block : a.block));
+          const double angle =
+            std::acos(std::max(-1.0, std::min(1.0, -(a.normal * b.normal))));
+          double distance = 0;
+          for (const auto &v : b.vertices)
+            distance = std::max(distance, std::abs((v - centre(a)) * a.normal));
+          // Joined if their normals share a class (4 tau) and their
+          // nodes coincide (tau of the smallest cell).
+          const double needed = std::max(angle / 4, distance / cell_size) * 1.5;
+          std::ostringstream message;
+          message << "blocks " << a.block << " and " << b.block
+                  << " have faces that nearly coincide (near "
+                  << describe_point<dim>(as_array<dim>(
+                                           dealii::Tensor<1, dim>(centre(a))),
+                                         a.block)
+                  << ", at most " << distance
+                  << " apart) but are not parallel: their normals differ "
+                     "by "
+                  << angle << " rad, more than the " << direction_tolerance
+                  << " of a joint (4 times 'Masonry/Coincidence "
+                     "tolerance'), so no joint would be made between "
+                     "them; make the faces coincide (a mesh written with "
+                     "few significant digits: write more)";
+          if (needed <= 1e-3)
+            message << ", raise 'Masonry/Coincidence tolerance' to " << needed
+                    << " or more if they are meant to touch";
+          message << ", or move them further apart (more than " << near << ")";
+          throw InputError(message.str());
         });
     }
 
@@ -555,8 +598,8 @@ namespace unilateral::masonry
      * and the check for tilted faces compares planes, which a warped face
      * does not have (a review: a warped face on a neighbour meshed 2 x 2
      * escaped both, and the blocks passed through each other). Touching: a
-     * node of either face on the other (on_face). Faces are found on a
-     * grid, as in refuse_tilted_faces.
+     * node of either face on the other (on_face), among the faces near it
+     * on a FaceGrid.
      */
     template <int dim>
     void
@@ -571,44 +614,10 @@ namespace unilateral::masonry
                 return face.warp > 0;
               }))
             return;
-          // As in refuse_tilted_faces: cells of the median face (or 1/64
-          // of the largest), each face in every cell its box meets.
-          std::vector<double> diameters;
-          for (const FaceRecord<dim> &face : faces)
-            diameters.push_back(face.diameter);
-          std::nth_element(diameters.begin(),
-                           diameters.begin() + diameters.size() / 2,
-                           diameters.end());
-          const double spacing = std::max(
-            {near,
-             diameters[diameters.size() / 2],
-             *std::max_element(diameters.begin(), diameters.end()) / 64});
-          using Cell     = std::array<long, 3>;
-          const auto box = [&](const FaceRecord<dim> &face) {
-            std::array<Cell, 2> range;
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                double lo = std::numeric_limits<double>::max(), hi = -lo;
-                for (const auto &v : face.vertices)
-                  {
-                    lo = std::min(lo, v[c]);
-                    hi = std::max(hi, v[c]);
-                  }
-                range[0][c] = std::lround(std::floor((lo - near) / spacing));
-                range[1][c] = std::lround(std::floor((hi + near) / spacing));
-              }
-            return range;
-          };
-          std::map<Cell, std::vector<std::size_t>> grid;
-          for (std::size_t f = 0; f < faces.size(); ++f)
-            {
-              const auto range = box(faces[f]);
-              for (long i = range[0][0]; i <= range[1][0]; ++i)
-                for (long j = range[0][1]; j <= range[1][1]; ++j)
-                  for (long k = range[0][2]; k <= range[1][2]; ++k)
-                    grid[{{i, j, k}}].push_back(f);
-            }
-          const auto touches = [&](const FaceRecord<dim> &a,
+          const FaceGrid<dim> grid(faces, near, [](const std::size_t) {
+            return true;
+          });
+          const auto          touches = [&](const FaceRecord<dim> &a,
                                    const FaceRecord<dim> &b) {
             for (const unsigned int node : b.nodes)
               if (on_face(a.vertices,
@@ -621,24 +630,13 @@ namespace unilateral::masonry
           };
           for (const FaceRecord<dim> &a : faces)
             if (a.warp > 0)
-              {
-                const auto range = box(a);
-                for (long i = range[0][0]; i <= range[1][0]; ++i)
-                  for (long j = range[0][1]; j <= range[1][1]; ++j)
-                    for (long k = range[0][2]; k <= range[1][2]; ++k)
-                      {
-                        const auto cell = grid.find({{i, j, k}});
-                        if (cell == grid.end())
-                          continue;
-                        for (const std::size_t f : cell->second)
-                          if (faces[f].block != a.block &&
-                              (touches(a, faces[f]) || touches(faces[f], a)))
-                            refuse_warped(a,
-                                          "a face of block " +
-                                            std::to_string(faces[f].block) +
-                                            " on it");
-                      }
-              }
+              grid.for_each_near(a, [&](const std::size_t f) {
+                if (faces[f].block != a.block &&
+                    (touches(a, faces[f]) || touches(faces[f], a)))
+                  refuse_warped(a,
+                                "a face of block " +
+                                  std::to_string(faces[f].block) + " on it");
+              });
         }
     }
   } // namespace
