@@ -7,7 +7,6 @@
 #include <unilateral/lcp/schur_complement.h>
 #include <unilateral/lcp/solve_lcp.h>
 #include <unilateral/lcp/sparse_cholesky.h>
-#include <unilateral/lcp/unbounded_direction.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -88,37 +87,6 @@ namespace unilateral::lcp
               "precision resolves to 'KKT tolerance': give the loads, the "
               "stiffness and the gaps in units closer to each other";
       report.message += hint.str();
-    }
-
-    /**
-     * The answer's own motion as a proof that the LCP has no solution. A
-     * body that the loads drive along a motion nothing resists makes A_FF
-     * singular, which PDAS turns into a proof; but where the motion is
-     * oblique to the mesh (a block on a frictionless slope of 1 degree,
-     * a review) the factorisation can meet a pivot at 1e-12 rather than
-     * round-off, solve, and move the body by 1e9: an answer whose relative
-     * KKT residuals pass, and which the checks can only call unresolvable
-     * (or, at a tolerance raised as they advise, converged). Its motion is
-     * then the runaway itself, and held to the same proof as PDAS's
-     * (unbounded_direction), whose work must come from where A does not
-     * resist the motion: a body held far away by a bound, its loads on a
-     * soft spring, is no runaway.
-     */
-    void
-    prove_unbounded_from_answer(const Problem  &problem,
-                                const Solution &solution,
-                                Report         &report)
-    {
-      if (report.status == Status::infeasible || problem.definite)
-        return;
-      const std::string proof = unbounded_direction(problem, solution.u);
-      if (proof.empty())
-        return;
-      report.message = proof + ", as the answer's own motion shows (" +
-                       report.solver + " had ended " +
-                       to_string(report.status) +
-                       ": a system singular only to round-off was solved)";
-      report.status = Status::infeasible;
     }
 
     /**
@@ -695,7 +663,6 @@ namespace unilateral::lcp
     // Release the last factorisation (it can be large) before returning.
     solution.factor.reset();
     assess_answer(problem, parameters.kkt_tolerance, solution, report);
-    prove_unbounded_from_answer(problem, solution, report);
     explain_unresolvable(problem, parameters, report);
     return report;
   }

@@ -28,6 +28,12 @@ namespace unilateral::lcp
     if (!(largest > 0) || !(loads > 0) || !std::isfinite(largest))
       return "";
     direction /= largest;
+    // Entries at round-off of the largest are none (an inverse iteration
+    // leaves them on rows that A holds; on a row whose diagonal is zero they
+    // would set the scale of the stiffness below).
+    for (double &entry : direction)
+      if (std::abs(entry) <= 1e-12)
+        entry = 0;
     // The loads' side of the motion.
     if (problem.b.dot(direction) < 0)
       direction = -direction;
@@ -44,11 +50,11 @@ namespace unilateral::lcp
     const double drive     = problem.b.dot(direction);
     // Against A's own diagonal along the motion, not its mean: a stiff
     // unknown beside a soft one is not round-off (a review: A = diag(1,
-    // 1e-16), definite, was said to have no solution for b = (1, 1)).
-    // Floored at round-off of the mean, for rows whose diagonal is zero.
+    // 1e-16), definite, was said to have no solution for b = (1, 1)); not
+    // floored by the mean either (a review: scaled, a soft spring then
+    // passed for none).
     const double own_diagonal =
-      std::max(direction.cwiseAbs2().dot(problem.A.diagonal().cwiseAbs()),
-               1e-16 * diagonal_scale(problem.A) * length * length);
+      direction.cwiseAbs2().dot(problem.A.diagonal().cwiseAbs());
     if (!(stiffness <= null_stiffness * own_diagonal) ||
         !(drive >= least_drive * loads * length))
       return "";
@@ -56,7 +62,7 @@ namespace unilateral::lcp
     // a motion mostly free can carry a small part that A resists, and the
     // work done there proves nothing (a review: a body held 1e6 away by a
     // bound, its loads on a soft spring, solved exactly, was said to have
-    // no solution; scaled, so was any guard on the bounds' size).
+    // no solution by a proof from the answer's motion, since withdrawn).
     Vector rounding = Vector::Zero(problem.size());
     for (Index j = 0; j < problem.size(); ++j)
       for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
@@ -82,7 +88,8 @@ namespace unilateral::lcp
                     std::to_string(problem.size()) + " unknowns")
             << " away along a motion that neither A nor any bound "
                "resists (its stiffness "
-            << std::max(stiffness, 0.0) / own_diagonal
+            << (own_diagonal > 0 ? std::max(stiffness, 0.0) / own_diagonal :
+                                   0.0)
             << " of A's diagonal along it, the loads' work along it "
             << drive / (loads * length)
             << " of |b| |d|): the energy falls without bound";

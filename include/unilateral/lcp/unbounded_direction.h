@@ -18,7 +18,8 @@ namespace unilateral::lcp
    * @p direction is a candidate from a singular system, zero on the
    * indices held at their bounds: the motion the loads drive there
    * (ActiveSetSystem::near_null_direction). It is taken as a proof only where
-   * it is one in double precision: A's stiffness along it, d^T A d, below
+   * it is one in double precision (its entries below 1e-12 of its largest
+   * taken as zero): A's stiffness along it, d^T A d, below
    * 1e-15 of A's diagonal along it, sum A_ii d_i^2 (a proof for A plus a
    * regularisation, or plus the Schur complement's round-off shift n_c
    * eps, is one for A too: A is stiffer along no direction), its entries

@@ -700,8 +700,10 @@ namespace unilateral::masonry
       for (const std::string &line : free_motions)
         out << "  note: " << line
             << ": the displacements are determined only up to such a motion "
-               "(the loads do no work along it); a support that holds it "
-               "('Normal displacement zero', 'Fixed') makes them unique\n";
+               "where the loads do no work along it (where they do, there is "
+               "no equilibrium, and this answer holds only to 'Solver/KKT "
+               "tolerance'); a support that holds it ('Normal displacement "
+               "zero', 'Fixed') makes them unique\n";
     if (report.converged() &&
         std::max(balance.force_imbalance, balance.moment_imbalance) > 1e-8)
       out << std::setprecision(1) << "  warning: the supports' reactions "
