@@ -26,12 +26,9 @@ namespace unilateral::lcp
     ForceScale
     force_scale(const Problem &problem, const Vector &u, const Vector &lambda)
     {
-      ForceScale scale;
-      Vector     abs_product = Vector::Zero(problem.size());
-      for (Index j = 0; j < problem.size(); ++j)
-        for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-          abs_product[it.row()] += std::abs(it.value() * u[j]);
-      const double abs_size = abs_product.lpNorm<Eigen::Infinity>();
+      ForceScale   scale;
+      const double abs_size =
+        absolute_product(problem.A, u).lpNorm<Eigen::Infinity>();
       // The contact forces count even without loads, where bounds alone (a
       // support moved into a body) drive them; not where they are nothing
       // but the round-off of A u (no loads, nothing pressed: u = 0 or a

@@ -307,6 +307,16 @@ namespace unilateral::lcp
     return mean > 0 ? mean : 1.0;
   }
 
+  Vector
+  absolute_product(const SparseMatrix &A, const Vector &u)
+  {
+    Vector product = Vector::Zero(A.rows());
+    for (Index j = 0; j < A.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+        product[it.row()] += std::abs(it.value() * u[j]);
+    return product;
+  }
+
   std::string
   singular_cause(const Problem &problem)
   {
@@ -372,11 +382,7 @@ namespace unilateral::lcp
       root_stiffness[i] =
         std::sqrt(diagonal[i] > 0 ? diagonal[i] : mean_diagonal);
 
-    // |A| |u|: the size of the terms that cancel in A u.
-    Vector abs_product = Vector::Zero(n);
-    for (Index j = 0; j < n; ++j)
-      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-        abs_product[it.row()] += std::abs(it.value() * u[j]);
+    const Vector abs_product = absolute_product(problem.A, u);
 
     double force_scale =
       n > 0 ?

@@ -8,7 +8,8 @@ namespace unilateral::lcp
 {
   namespace
   {
-    /// A's stiffness along a proof, relative to its mean diagonal, at most.
+    /// A's stiffness along a proof, relative to its diagonal along it, at
+    /// most.
     constexpr double null_stiffness = 1e-15;
     /// Entries of the other sign on constrained indices, relative.
     constexpr double sign_round_off = 1e-8;
@@ -62,12 +63,9 @@ namespace unilateral::lcp
     // a motion mostly free can carry a small part that A resists, and the
     // work done there proves nothing (a review: a body held 1e6 away by a
     // bound, its loads on a soft spring, solved exactly, was said to have
-    // no solution by a proof from the answer's motion, since withdrawn).
-    Vector rounding = Vector::Zero(problem.size());
-    for (Index j = 0; j < problem.size(); ++j)
-      for (SparseMatrix::InnerIterator it(problem.A, j); it; ++it)
-        rounding[it.row()] += std::abs(it.value() * direction[j]);
-    double resisted_work = 0;
+    // no solution; benchmarks/stress/README.md).
+    const Vector rounding      = absolute_product(problem.A, direction);
+    double       resisted_work = 0;
     for (Index i = 0; i < problem.size(); ++i)
       if (std::abs(force[i]) > resisting_force * rounding[i])
         resisted_work += std::abs(problem.b[i] * direction[i]);

@@ -166,6 +166,11 @@ namespace unilateral::lcp
   std::string
   singular_cause(const Problem &problem);
 
+  /// |A| |u|: the size of the terms that cancel in A u (its rounding error
+  /// is epsilon times that).
+  Vector
+  absolute_product(const SparseMatrix &A, const Vector &u);
+
   /**
    * Relative KKT residuals of u (lambda = A u - b is computed here, so no
    * solver can report a residual it did not earn), in the unknowns scaled
