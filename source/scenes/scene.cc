@@ -157,6 +157,29 @@ namespace unilateral
       lcp::write_vector(solution.u, directory + "/u.txt");
       lcp::write_vector(solution.lambda, directory + "/lambda.txt");
     }
+
+    /**
+     * The report of an LCP that the scene proved to have no solution, not
+     * solved: 'infeasible' with @p proof, and @p solution zero (the start,
+     * whose residuals the report gives).
+     */
+    lcp::Report
+    unsolved(const lcp::Problem &problem,
+             const std::string  &method,
+             const std::string  &proof,
+             lcp::Solution      &solution)
+    {
+      solution.u      = lcp::Vector::Zero(problem.size());
+      solution.lambda = lcp::Vector::Zero(problem.size());
+      solution.active_set.clear();
+      lcp::Report report;
+      report.solver  = "none (" + method + " not run)";
+      report.status  = lcp::Status::infeasible;
+      report.message = proof;
+      report.energy  = lcp::energy(problem, solution.u);
+      report.kkt     = lcp::kkt_residuals(problem, solution.u);
+      return report;
+    }
   } // namespace
 
   Scene::Scene(std::string name)
@@ -189,21 +212,30 @@ namespace unilateral
     assemble(context);
     export_lcp_if_requested(context, lcp_problem);
 
-    lcp::Report report;
-    {
-      const auto timer = context.section("solve");
-      initial_solution(context);
-      if (context.progress != nullptr)
-        *context.progress << "  solving with " << context.solver.method
-                          << (context.solver.schur_complement ?
-                                " on the Schur complement" :
-                                "")
-                          << std::endl;
-      report = lcp::solve_lcp(lcp_problem,
-                              context.solver,
-                              lcp_solution,
-                              context.progress);
-    }
+    lcp::Report       report;
+    const std::string proof = proof_of_no_solution();
+    if (!proof.empty())
+      {
+        if (context.progress != nullptr)
+          *context.progress << "  not solving: " << proof << std::endl;
+        report =
+          unsolved(lcp_problem, context.solver.method, proof, lcp_solution);
+      }
+    else
+      {
+        const auto timer = context.section("solve");
+        initial_solution(context);
+        if (context.progress != nullptr)
+          *context.progress
+            << "  solving with " << context.solver.method
+            << (context.solver.schur_complement ? " on the Schur complement" :
+                                                  "")
+            << std::endl;
+        report = lcp::solve_lcp(lcp_problem,
+                                context.solver,
+                                lcp_solution,
+                                context.progress);
+      }
     write_solution_if_requested(context, lcp_solution);
     {
       const auto timer = context.section("postprocess");
@@ -251,6 +283,12 @@ namespace unilateral
         case lcp::Status::converged:
           break;
       }
+    return "";
+  }
+
+  std::string
+  Scene::proof_of_no_solution()
+  {
     return "";
   }
 

@@ -159,6 +159,14 @@ namespace unilateral
     virtual void
     assemble_system(RunContext &context) = 0;
 
+    /**
+     * A proof from the scene's own data that its LCP has no solution, in
+     * the scene's terms (default: none, the solver decides). Where there is
+     * one, run() reports 'infeasible' with it and does not solve.
+     */
+    virtual std::string
+    proof_of_no_solution();
+
     /// The start of the solve in lcp_solution (default: none, each method's
     /// own).
     virtual void

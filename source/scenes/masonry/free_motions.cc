@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -187,99 +188,273 @@ namespace unilateral::masonry
       unsigned int              n_nodes    = 0;
       unsigned int              first_node = 0;
       RigidMatrix<dim>          gram       = RigidMatrix<dim>::Zero();
+      /// A basis of its free motions (empty if the supports hold it).
+      std::vector<RigidVector<dim>> motions;
+      /// "block 3 (a node at (1, 0)) and the 2 blocks joined to it".
+      std::string who;
     };
+
+    template <std::size_t n>
+    double
+    norm(const std::array<double, n> &u)
+    {
+      double sum = 0;
+      for (const double x : u)
+        sum += x * x;
+      return std::sqrt(sum);
+    }
+
+    /// The displacement at @p p of the rigid motion (t, w) of a group:
+    /// t + (w / size) x (p - centre), the motion support_row() measures.
+    template <int dim>
+    std::array<double, dim>
+    motion_at(const RigidVector<dim>        &v,
+              const std::array<double, dim> &p,
+              const Group<dim>              &g)
+    {
+      std::array<double, dim> u{}, d{};
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          u[c] = v[c];
+          d[c] = (p[c] - g.centre[c]) / std::max(g.size, 1e-300);
+        }
+      if constexpr (dim == 2)
+        {
+          u[0] -= v[2] * d[1];
+          u[1] += v[2] * d[0];
+        }
+      else
+        {
+          u[0] += v[4] * d[2] - v[5] * d[1];
+          u[1] += v[5] * d[0] - v[3] * d[2];
+          u[2] += v[3] * d[1] - v[4] * d[0];
+        }
+      return u;
+    }
+
+    /**
+     * The groups of blocks linked by joints, each with the free motions
+     * that its supports leave it, and for every node its group's index.
+     */
+    template <int dim>
+    std::vector<Group<dim>>
+    groups_and_free_motions(const ContactSet<dim>     &contacts,
+                            std::vector<unsigned int> &group_of_node)
+    {
+      const std::size_t n_nodes = contacts.node_position.size();
+      if (n_nodes == 0)
+        return {};
+      const unsigned int n_blocks =
+        *std::max_element(contacts.node_block.begin(),
+                          contacts.node_block.end()) +
+        1;
+      BlockGroups groups(n_blocks);
+      for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
+        if (contacts.constraints[k].kind == ConstraintKind::joint)
+          groups.join(contacts.blocks[k][0], contacts.blocks[k][1]);
+
+      // Each group's centre and size (the largest distance of a node from
+      // it), so that rotations and translations are rows of one scale.
+      std::vector<Group<dim>> group(n_blocks);
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        group[groups.root(b)].blocks.push_back(b);
+      for (std::size_t a = 0; a < n_nodes; ++a)
+        {
+          Group<dim> &g = group[groups.root(contacts.node_block[a])];
+          if (g.n_nodes++ == 0)
+            g.first_node = static_cast<unsigned int>(a);
+          for (unsigned int c = 0; c < dim; ++c)
+            g.centre[c] += contacts.node_position[a][c];
+        }
+      for (Group<dim> &g : group)
+        for (unsigned int c = 0; c < dim && g.n_nodes > 0; ++c)
+          g.centre[c] /= g.n_nodes;
+      for (std::size_t a = 0; a < n_nodes; ++a)
+        {
+          Group<dim> &g        = group[groups.root(contacts.node_block[a])];
+          double      distance = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            distance += std::pow(contacts.node_position[a][c] - g.centre[c], 2);
+          g.size = std::max(g.size, std::sqrt(distance));
+        }
+
+      const auto add_support = [&](const unsigned int             node,
+                                   const std::array<double, dim> &normal) {
+        Group<dim> &g = group[groups.root(contacts.node_block[node])];
+        const RigidVector<dim> row =
+          support_row<dim>(normal,
+                           contacts.node_position[node],
+                           g.centre,
+                           std::max(g.size, 1e-300));
+        g.gram += row * row.transpose();
+      };
+      for (const HeldNode<dim> &h : contacts.held)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            std::array<double, dim> axis{};
+            axis[c] = 1;
+            add_support(h.node, axis);
+          }
+      for (const Roller<dim> &r : contacts.rollers)
+        add_support(r.node, r.normal);
+      for (const UnilateralConstraint<dim> &s : contacts.constraints)
+        if (s.kind == ConstraintKind::signorini)
+          add_support(s.lower, s.normal);
+
+      std::vector<unsigned int> index_of_root(
+        n_blocks, std::numeric_limits<unsigned int>::max());
+      std::vector<Group<dim>> with_motions;
+      for (Group<dim> &g : group)
+        {
+          if (g.blocks.empty())
+            continue;
+          g.motions = free_basis<dim>(g.gram);
+          if (g.motions.empty())
+            continue;
+          const unsigned int first_block = contacts.node_block[g.first_node];
+          const std::string  where =
+            " (a node at " +
+            point_text<dim>(contacts.node_position[g.first_node]) + ")";
+          g.who =
+            g.blocks.size() == n_blocks ?
+              "the whole structure (" + quantity(n_blocks, "block") + ")" :
+            g.blocks.size() == 1 ?
+              "block " + std::to_string(first_block) + where :
+              "block " + std::to_string(first_block) + where + " and the " +
+                quantity(g.blocks.size() - 1, "block") + " joined to it";
+          index_of_root[groups.root(first_block)] = with_motions.size();
+          with_motions.push_back(std::move(g));
+        }
+      group_of_node.resize(n_nodes);
+      for (std::size_t a = 0; a < n_nodes; ++a)
+        group_of_node[a] = index_of_root[groups.root(contacts.node_block[a])];
+      return with_motions;
+    }
+
+    /// What the loads and the gaps do along one motion of a group.
+    struct AlongMotion
+    {
+      double work     = 0; ///< the loads' work W = f . u
+      double scale    = 0; ///< sum over the nodes of |f| |u|
+      double largest  = 0; ///< the largest |u| at a node
+      double farthest = 0; ///< the largest coordinate of a node
+      double changed  = 0; ///< the largest change of a gap
+    };
+
+    /**
+     * For each group, the combination of its free motions along which the
+     * loads do the most work: with the loads' work w_j along each motion of
+     * its (orthonormal) basis, v = sum_j w_j v_j / |w| (zero if they do no
+     * work along any).
+     */
+    template <int dim>
+    std::vector<RigidVector<dim>>
+    most_driven_motions(const ContactSet<dim>           &contacts,
+                        const std::vector<Group<dim>>   &groups,
+                        const std::vector<unsigned int> &group_of_node,
+                        const std::vector<double>       &load)
+    {
+      std::vector<Eigen::VectorXd> work(groups.size());
+      for (std::size_t i = 0; i < groups.size(); ++i)
+        work[i] = Eigen::VectorXd::Zero(groups[i].motions.size());
+      for (std::size_t a = 0; a < contacts.node_position.size(); ++a)
+        if (const unsigned int i = group_of_node[a]; i < groups.size())
+          for (std::size_t j = 0; j < groups[i].motions.size(); ++j)
+            {
+              const auto u = motion_at<dim>(groups[i].motions[j],
+                                            contacts.node_position[a],
+                                            groups[i]);
+              for (unsigned int c = 0; c < dim; ++c)
+                work[i][j] += load[contacts.node_dofs[a][c]] * u[c];
+            }
+      std::vector<RigidVector<dim>> v(groups.size(), RigidVector<dim>::Zero());
+      for (std::size_t i = 0; i < groups.size(); ++i)
+        for (std::size_t j = 0; j < groups[i].motions.size(); ++j)
+          if (work[i].norm() > 0)
+            v[i] += work[i][j] / work[i].norm() * groups[i].motions[j];
+      return v;
+    }
+
+    /// The figures of AlongMotion for each group's motion @p v.
+    template <int dim>
+    std::vector<AlongMotion>
+    along_motions(const ContactSet<dim>               &contacts,
+                  const std::vector<Group<dim>>       &groups,
+                  const std::vector<unsigned int>     &group_of_node,
+                  const std::vector<double>           &load,
+                  const std::vector<RigidVector<dim>> &v)
+    {
+      std::vector<AlongMotion> along(groups.size());
+      const auto               motion = [&](const unsigned int node) {
+        const unsigned int i = group_of_node[node];
+        return motion_at<dim>(v[i], contacts.node_position[node], groups[i]);
+      };
+      for (std::size_t a = 0; a < contacts.node_position.size(); ++a)
+        if (const unsigned int i = group_of_node[a]; i < groups.size())
+          {
+            const auto              u = motion(a);
+            std::array<double, dim> f;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                f[c] = load[contacts.node_dofs[a][c]];
+                along[i].work += f[c] * u[c];
+                along[i].farthest =
+                  std::max(along[i].farthest,
+                           std::abs(contacts.node_position[a][c]));
+              }
+            along[i].scale += norm(f) * norm(u);
+            along[i].largest = std::max(along[i].largest, norm(u));
+          }
+
+      // The gaps: the supports' (whose rows the Gram matrix counted) and
+      // the joints' (whose two nodes coincide only to 'Coincidence
+      // tolerance', so that a rotation moves them apart a little).
+      const auto change = [&](const unsigned int node, const double amount) {
+        if (const unsigned int i = group_of_node[node]; i < groups.size())
+          along[i].changed = std::max(along[i].changed, std::abs(amount));
+      };
+      const auto normal_part = [&](const std::array<double, dim> &normal,
+                                   const unsigned int             node) {
+        if (group_of_node[node] >= groups.size())
+          return 0.0;
+        const auto u     = motion(node);
+        double     n_dot = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          n_dot += normal[c] * u[c];
+        return n_dot;
+      };
+      for (const HeldNode<dim> &h : contacts.held)
+        if (group_of_node[h.node] < groups.size())
+          change(h.node, norm(motion(h.node)));
+      for (const Roller<dim> &r : contacts.rollers)
+        change(r.node, normal_part(r.normal, r.node));
+      for (const UnilateralConstraint<dim> &s : contacts.constraints)
+        change(s.lower,
+               normal_part(s.normal, s.lower) -
+                 (s.kind == ConstraintKind::joint ?
+                    normal_part(s.normal, s.upper) :
+                    0.0));
+      return along;
+    }
   } // namespace
 
   template <int dim>
   std::vector<std::string>
   free_rigid_motions(const ContactSet<dim> &contacts)
   {
-    const std::size_t n_nodes = contacts.node_position.size();
-    if (n_nodes == 0)
-      return {};
-    const unsigned int n_blocks = *std::max_element(contacts.node_block.begin(),
-                                                    contacts.node_block.end()) +
-                                  1;
-    BlockGroups groups(n_blocks);
-    for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
-      if (contacts.constraints[k].kind == ConstraintKind::joint)
-        groups.join(contacts.blocks[k][0], contacts.blocks[k][1]);
-
-    // Each group's centre and size (the largest distance of a node from
-    // it), so that rotations and translations are rows of one scale.
-    std::vector<Group<dim>> group(n_blocks);
-    for (unsigned int b = 0; b < n_blocks; ++b)
-      group[groups.root(b)].blocks.push_back(b);
-    for (std::size_t a = 0; a < n_nodes; ++a)
+    std::vector<unsigned int> group_of_node(contacts.node_position.size());
+    std::vector<std::string>  result;
+    for (const Group<dim> &g : groups_and_free_motions(contacts, group_of_node))
       {
-        Group<dim> &g = group[groups.root(contacts.node_block[a])];
-        if (g.n_nodes++ == 0)
-          g.first_node = static_cast<unsigned int>(a);
-        for (unsigned int c = 0; c < dim; ++c)
-          g.centre[c] += contacts.node_position[a][c];
-      }
-    for (Group<dim> &g : group)
-      for (unsigned int c = 0; c < dim && g.n_nodes > 0; ++c)
-        g.centre[c] /= g.n_nodes;
-    for (std::size_t a = 0; a < n_nodes; ++a)
-      {
-        Group<dim> &g        = group[groups.root(contacts.node_block[a])];
-        double      distance = 0;
-        for (unsigned int c = 0; c < dim; ++c)
-          distance += std::pow(contacts.node_position[a][c] - g.centre[c], 2);
-        g.size = std::max(g.size, std::sqrt(distance));
-      }
-
-    const auto add_support = [&](const unsigned int             node,
-                                 const std::array<double, dim> &normal) {
-      Group<dim>            &g = group[groups.root(contacts.node_block[node])];
-      const RigidVector<dim> row =
-        support_row<dim>(normal,
-                         contacts.node_position[node],
-                         g.centre,
-                         std::max(g.size, 1e-300));
-      g.gram += row * row.transpose();
-    };
-    for (const HeldNode<dim> &h : contacts.held)
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          std::array<double, dim> axis{};
-          axis[c] = 1;
-          add_support(h.node, axis);
-        }
-    for (const Roller<dim> &r : contacts.rollers)
-      add_support(r.node, r.normal);
-    for (const UnilateralConstraint<dim> &s : contacts.constraints)
-      if (s.kind == ConstraintKind::signorini)
-        add_support(s.lower, s.normal);
-
-    std::vector<std::string> result;
-    for (const Group<dim> &g : group)
-      {
-        if (g.blocks.empty())
-          continue;
         std::vector<std::string> motions;
-        for (const RigidVector<dim> &v : free_basis<dim>(g.gram))
+        for (const RigidVector<dim> &v : g.motions)
           motions.push_back(
             describe_motion<dim>(v, g.centre, std::max(g.size, 1e-300)));
-        if (motions.empty())
-          continue;
-        const unsigned int first_block = contacts.node_block[g.first_node];
-        const std::string  where =
-          " (a node at " +
-          point_text<dim>(contacts.node_position[g.first_node]) + ")";
-        const std::string who =
-          g.blocks.size() == n_blocks ?
-            "the whole structure (" + quantity(n_blocks, "block") + ")" :
-          g.blocks.size() == 1 ?
-            "block " + std::to_string(first_block) + where :
-            "block " + std::to_string(first_block) + where + " and the " +
-              quantity(g.blocks.size() - 1, "block") + " joined to it";
         if (motions.size() == n_rigid_motions(dim))
-          result.push_back(who + " is held by no support");
+          result.push_back(g.who + " is held by no support");
         else
           {
-            std::string line = who + " can move freely by ";
+            std::string line = g.who + " can move freely by ";
             for (std::size_t i = 0; i < motions.size(); ++i)
               line += (i == 0                  ? "" :
                        i + 1 == motions.size() ? " and " :
@@ -301,6 +476,53 @@ namespace unilateral::masonry
     return result;
   }
 
+  template <int dim>
+  std::string
+  loads_driving_a_free_motion(const ContactSet<dim>     &contacts,
+                              const std::vector<double> &load)
+  {
+    std::vector<unsigned int>     group_of_node;
+    const std::vector<Group<dim>> groups =
+      groups_and_free_motions(contacts, group_of_node);
+    const std::vector<RigidVector<dim>> v =
+      most_driven_motions(contacts, groups, group_of_node, load);
+    const std::vector<AlongMotion> along =
+      along_motions(contacts, groups, group_of_node, load, v);
+    for (std::size_t i = 0; i < groups.size(); ++i)
+      {
+        // A proof only where v is free to the rounding of the nodes'
+        // positions and the faces' normals (larger for a structure far
+        // from the origin), and the loads' work is far above the rounding
+        // of its sum. work / scale is the sine of the slope that a block
+        // slides down.
+        const AlongMotion &a = along[i];
+        const double       rounding =
+          1e-10 * std::max(1.0, a.farthest / groups[i].size);
+        if (!(a.changed <= rounding * a.largest) ||
+            !(std::abs(a.work) > 1e-10 * a.scale))
+          continue;
+        std::ostringstream proof;
+        proof.precision(2);
+        proof << "the loads do work along a motion that no support or "
+                 "joint resists, the "
+              << describe_motion<dim>(v[i], groups[i].centre, groups[i].size)
+              << " of " << groups[i].who << ": their work along it is "
+              << std::abs(a.work) / a.scale
+              << " of sum |f| |u|, and it changes no gap by more than "
+              << a.changed / a.largest
+              << " of the largest displacement (found from the supports and "
+                 "the loads before solving)";
+        return proof.str();
+      }
+    return "";
+  }
+
+  template std::string
+  loads_driving_a_free_motion(const ContactSet<2>       &contacts,
+                              const std::vector<double> &load);
+  template std::string
+  loads_driving_a_free_motion(const ContactSet<3>       &contacts,
+                              const std::vector<double> &load);
   template std::vector<std::string>
   free_rigid_motions(const ContactSet<2> &contacts);
   template std::vector<std::string>

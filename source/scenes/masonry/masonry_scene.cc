@@ -368,6 +368,24 @@ namespace unilateral::masonry
       }
   }
 
+  template <int dim>
+  std::string
+  MasonryScene<dim>::proof_of_no_solution()
+  {
+    // The loads cost an assembly of the residual: only where something
+    // moves freely.
+    if (free_motions.empty())
+      return "";
+    std::vector<double> load = residual_forces<dim>(
+      state->discretisation,
+      state->loads,
+      std::vector<double>(state->contacts.node_of_dof.size(), 0.0));
+    for (double &f : load)
+      f = -f;
+    driven_motion = loads_driving_a_free_motion<dim>(state->contacts, load);
+    return driven_motion;
+  }
+
   // u = C~^-1 u~, and for every constraint its normal gap (the gap variable,
   // or n . u + gap on a support), its force lambda and whether it is active.
   template <int dim>
@@ -421,8 +439,10 @@ namespace unilateral::masonry
     for (const ConstraintResult<dim> &c : constraints)
       largest_force = std::max(largest_force, std::abs(c.contact_force));
     n_degenerate_contacts = 0;
+    // Not of the zero displacement given where nothing was solved.
     for (const ConstraintResult<dim> &c : constraints)
       n_degenerate_contacts +=
+        !proved_before_solving(report) &&
         std::abs(c.normal_gap) <= 1e-10 * max_displacement &&
         std::abs(c.contact_force) <= 1e-10 * largest_force;
     if (report.converged())
@@ -805,10 +825,21 @@ namespace unilateral::masonry
     const std::string structure =
       state && !state->mesh_file.empty() ? "the structure" : "the wall";
     // A support that acts nowhere is the likeliest cause of both.
-    std::string unused;
+    std::string nowhere;
     if (state)
       for (const std::string &support : state->contacts.supports_acting_nowhere)
-        unused += "; " + support + " acts on no node";
+        nowhere += "; " + support + " acts on no node";
+    // The scene's own proof names the motion; other groups that can move
+    // follow it.
+    if (proved_before_solving(report))
+      {
+        std::string others;
+        for (const std::string &line : free_motions)
+          others += free_motions.size() > 1 ? "; " + line : "";
+        return structure + " has no equilibrium: " + report.message + nowhere +
+               others;
+      }
+    std::string unused = nowhere;
     // Blocks that a rigid motion moves past every support float, unless
     // the loads do no work along it. A block held by nothing is, in a mesh
     // file, most likely two faces that nearly touch but do not coincide.

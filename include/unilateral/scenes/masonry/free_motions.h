@@ -30,4 +30,22 @@ namespace unilateral::masonry
   template <int dim>
   std::vector<std::string>
   free_rigid_motions(const ContactSet<dim> &contacts);
+
+  /**
+   * The proof that the structure has no equilibrium, if the loads do work
+   * along one of those free motions: a rigid motion of a group changes
+   * neither the elastic energy (the elements reproduce it exactly) nor any
+   * gap, so the energy falls without bound along it. Empty if they do no
+   * work along any, to the rounding of their sum (1e-10 of sum |f| |u|),
+   * or if the motion changes a gap by more than the rounding of the nodes'
+   * positions (1e-10 of its size, more far from the origin): then the
+   * solver decides. The solvers' own proof cannot see this where the
+   * factorisation meets a pivot above round-off along the motion and
+   * moves the structure by 1e9 (a block on a frictionless slope).
+   * @p load: the nodal loads f at every DOF.
+   */
+  template <int dim>
+  std::string
+  loads_driving_a_free_motion(const ContactSet<dim>     &contacts,
+                              const std::vector<double> &load);
 } // namespace unilateral::masonry

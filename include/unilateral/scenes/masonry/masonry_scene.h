@@ -214,6 +214,10 @@ namespace unilateral::masonry
     void
     assemble_system(RunContext &context) override;
 
+    /// Loads that do work along a free rigid motion (free_motions.h).
+    std::string
+    proof_of_no_solution() override;
+
     /// u = C~^-1 u~, each constraint's gap, force and state, the energy in
     /// the parameter file's units, the reactions.
     void
@@ -291,6 +295,16 @@ namespace unilateral::masonry
     /// The groups of blocks that some rigid motion moves past every support
     /// (free_rigid_motions), one line each.
     std::vector<std::string> free_motions;
+    /// The proof that the loads drive one of them, or empty.
+    std::string driven_motion;
+
+    /// Whether @p report is that proof, found without solving.
+    bool
+    proved_before_solving(const lcp::Report &report) const
+    {
+      return report.status == lcp::Status::infeasible &&
+             !driven_motion.empty() && report.message == driven_motion;
+    }
   };
 
   /// The scene of the parameter file: MasonryScene<2> or <3> by
