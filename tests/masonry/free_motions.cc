@@ -23,7 +23,13 @@
 //    KKT tolerance of 0.05 that the message allowed, 1 degree ended
 //    'converged' (exit 0) with that motion (a review). At 1e-11 degrees the
 //    loads' work along the slide, 1.7e-13 of |f| |u|, is below what the
-//    scene calls a proof (1e-10): the solver decides there.
+//    scene calls a proof (2.2e-10): the solver decides there;
+//  - a block in a V-groove of 5e-6 pushed by 1e-6 of its weight is in
+//    equilibrium at the origin and far from it (a review found it called
+//    'no equilibrium' at 1e5: the test of a free motion once allowed more
+//    than the rounding of the positions there);
+//  - courses of a wall on a fixed base slide on each other under tilted
+//    gravity (free_slides), in 2D and 3D: no equilibrium, the course named.
 #include "../application_test_tools.h"
 
 #include <cmath>
@@ -107,6 +113,47 @@ namespace
           "subsection Solver\n  set KKT tolerance = " +
             tolerance + "\nend\n");
     return "slope.prm";
+  }
+  /**
+   * A unit block of 2 x 2 cells in a frictionless V-groove whose sides
+   * slope by 5e-6, its corner at (shift, shift), E = 1e9, pushed sideways
+   * by 1e-6 of its weight: the groove holds a push below 5e-6 of the
+   * weight, so this is in equilibrium (the reactions balance the loads; a
+   * review). Its rotation about the far point where the sides' normals
+   * meet is nearly free (the Gram matrix's eigenvalue 2.5e-11 of the
+   * largest), and far from the origin the scene once took it as free.
+   */
+  std::string
+  block_in_groove(const double shift)
+  {
+    std::ostringstream nodes;
+    nodes.precision(17);
+    const double eps = 5e-6;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i)
+        nodes << 3 * j + i + 1 << " " << shift + 0.5 * i << " "
+              << shift + 0.5 * j + (1 - 0.5 * j) * eps * std::abs(0.5 * i - 0.5)
+              << " 0\n";
+    write("groove.msh",
+          "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n"
+          "1 101 \"base\"\n1 102 \"left\"\n$EndPhysicalNames\n$Nodes\n9\n" +
+            nodes.str() +
+            "$EndNodes\n$Elements\n8\n1 1 2 101 101 1 2\n"
+            "2 1 2 101 101 2 3\n3 1 2 102 102 4 1\n4 1 2 102 102 7 4\n"
+            "5 3 2 1 1 1 2 5 4\n6 3 2 1 1 2 3 6 5\n7 3 2 1 1 4 5 8 7\n"
+            "8 3 2 1 1 5 6 9 8\n$EndElements\n");
+    write("groove.prm",
+          "set Scene = masonry\nsubsection Output\n  set Directory = results\n"
+          "  set Print timings = false\n  set Progress = false\n"
+          "  set Write VTU = false\nend\nsubsection Masonry\n"
+          "  set Geometry = mesh file\n  set Mesh file = groove.msh\n"
+          "  subsection Boundary conditions\n"
+          "    set Normal displacement zero =\n    set Signorini = base\n"
+          "    set Signorini gap = 0\n    set Traction boundaries = left\n"
+          "    set Traction = 1e-6; 0\n    set Gravity = 1\n  end\n"
+          "  subsection Materials\n    set Young's modulus = 1e9\n  end\n"
+          "end\n");
+    return "groove.prm";
   }
 } // namespace
 
@@ -207,6 +254,50 @@ main()
                           std::string::npos)
                 << "\n";
     }
+  for (const double shift : {0.0, 1e5, 1e6})
+    {
+      const Result groove = run({block_in_groove(shift)});
+      std::cout << "a block in a V-groove of 5e-6, pushed by 1e-6, at " << shift
+                << ": exit code " << groove.code << "\n";
+    }
+
+  // Courses that slide on each other (free_slides): a wall on a fixed base
+  // without side rollers, gravity tilted by gx: every course above the
+  // base slides along its horizontal joints, so there is no equilibrium,
+  // although no support leaves the wall as a whole free. The first course
+  // named is the second (blocks 3 to 5 of stack bond m = 3). At gx = 1e-11
+  // the loads' work is below what the scene calls a proof (2.2e-10).
+  for (const std::string &gx : {"1e-2", "1e-6", "1e-11"})
+    {
+      write("tilted.prm",
+            wall("", "0; 0", "", "") +
+              "subsection Masonry\n  subsection Boundary conditions\n"
+              "    set Fixed = base\n    set Traction boundaries =\n"
+              "    set Gravity direction = " +
+              gx + ", -1, 0\n  end\nend\n");
+      const Result tilted = run({"tilted.prm"});
+      std::cout << "stack bond m = 3 on a fixed base, gravity tilted by " << gx
+                << ": exit code " << tilted.code << ", a course slides: "
+                << yes_no(tilted.err.find(
+                            "the translation along (1, 0) of block 3 (a node "
+                            "at (0, 0.33333333)) and the 2 blocks that "
+                            "slide with it") != std::string::npos)
+                << "\n";
+    }
+  // The same in 3D: the wall two blocks thick on a fixed base, gravity
+  // tilted along z; the courses' rows slide along z.
+  write("tilted_3d.prm",
+        wall("", "0; 0; 0", three_d, "") +
+          "subsection Masonry\n  subsection Boundary conditions\n"
+          "    set Fixed = base\n    set Traction boundaries =\n"
+          "    set Gravity direction = 0, -1, 1e-3\n  end\nend\n");
+  const Result tilted_3d = run({"tilted_3d.prm"});
+  std::cout << "3D wall on a fixed base, gravity tilted along z: exit code "
+            << tilted_3d.code << ", a set of blocks slides along z: "
+            << yes_no(tilted_3d.err.find("the translation along (0, 0, 1) of "
+                                         "block") != std::string::npos)
+            << "\n";
+
   std::cout << "twelve loose squares: exit code " << loose.code << ", " << named
             << " named, the rest counted: "
             << yes_no(loose.err.find("and 2 more groups of blocks") !=

@@ -436,6 +436,159 @@ namespace unilateral::masonry
                     0.0));
       return along;
     }
+
+    /// The rounding of a unit quantity.
+    constexpr double epsilon = std::numeric_limits<double>::epsilon();
+
+    /**
+     * The largest |n . t| for which a joint or support does not resist
+     * (nor link blocks in) a slide along t: a thousand times the rounding
+     * of a unit normal. Larger tilts resist: a block pushed into a slot
+     * whose walls taper by theta holds a load along the slot with forces
+     * of 1 / theta times it.
+     */
+    constexpr double parallel = 1e3 * epsilon;
+
+    template <int dim>
+    double
+    dot(const std::array<double, dim> &a, const std::array<double, dim> &b)
+    {
+      double sum = 0;
+      for (unsigned int c = 0; c < dim; ++c)
+        sum += a[c] * b[c];
+      return sum;
+    }
+
+    /**
+     * The directions to try slides along: perpendicular to the most
+     * frequent joint normals (2D: one per normal; 3D: two in the plane of
+     * each normal, and the cross product of each pair).
+     */
+    template <int dim>
+    std::vector<std::array<double, dim>>
+    slide_directions(const ContactSet<dim> &contacts)
+    {
+      DirectionClasses<dim>     classes;
+      std::vector<unsigned int> count;
+      for (const UnilateralConstraint<dim> &s : contacts.constraints)
+        if (s.kind == ConstraintKind::joint)
+          {
+            const unsigned int k = classes.classify(s.normal).first;
+            count.resize(std::max<std::size_t>(count.size(), k + 1));
+            ++count[k];
+          }
+      std::vector<unsigned int> order(count.size());
+      std::iota(order.begin(), order.end(), 0u);
+      std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) {
+        return count[a] > count[b];
+      });
+      constexpr std::size_t most_frequent = 16;
+      order.resize(std::min(order.size(), most_frequent));
+
+      std::vector<std::array<double, dim>> directions;
+      const auto add = [&](std::array<double, dim> t) {
+        const double length = norm(t);
+        if (!(length > 1e-6))
+          return;
+        for (double &x : t)
+          x /= length;
+        directions.push_back(t);
+      };
+      for (const unsigned int k : order)
+        {
+          const std::array<double, dim> &n = classes.directions[k];
+          if constexpr (dim == 2)
+            add({{-n[1], n[0]}});
+          else
+            {
+              // Two directions in the plane of n: n x e, e the axis least
+              // along n, and n x (n x e).
+              std::array<double, dim> e{};
+              e[std::abs(n[0]) <= std::abs(n[1]) ?
+                  (std::abs(n[0]) <= std::abs(n[2]) ? 0 : 2) :
+                  (std::abs(n[1]) <= std::abs(n[2]) ? 1 : 2)] = 1;
+              const auto cross = [](const std::array<double, dim> &a,
+                                    const std::array<double, dim> &b) {
+                return std::array<double, dim>{{a[1] * b[2] - a[2] * b[1],
+                                                a[2] * b[0] - a[0] * b[2],
+                                                a[0] * b[1] - a[1] * b[0]}};
+              };
+              const auto t = cross(n, e);
+              add(t);
+              add(cross(n, t));
+              for (const unsigned int l : order)
+                if (l > k)
+                  add(cross(n, classes.directions[l]));
+            }
+        }
+      return directions;
+    }
+
+    /**
+     * The proof from the slides: the loads' work W = sum f . t over a set's
+     * nodes against sum |f|.
+     */
+    template <int dim>
+    std::string
+    loads_driving_a_slide(const ContactSet<dim>              &contacts,
+                          const std::vector<FreeSlides<dim>> &slides,
+                          const std::vector<double>          &load)
+    {
+      for (const FreeSlides<dim> &slide : slides)
+        {
+          std::vector<double>       work(slide.n_sets), scale(slide.n_sets);
+          std::vector<unsigned int> n_blocks(slide.n_sets),
+            first_node(slide.n_sets);
+          std::vector<char> seen(slide.set_of_block.size(), 0);
+          for (std::size_t a = 0; a < contacts.node_position.size(); ++a)
+            {
+              const unsigned int b = contacts.node_block[a];
+              const unsigned int i = slide.set_of_block[b];
+              if (i == FreeSlides<dim>::none)
+                continue;
+              if (!seen[b]++ && n_blocks[i]++ == 0)
+                first_node[i] = a;
+              std::array<double, dim> f;
+              for (unsigned int c = 0; c < dim; ++c)
+                f[c] = load[contacts.node_dofs[a][c]];
+              work[i] += dot<dim>(f, slide.direction);
+              scale[i] += norm(f);
+            }
+          // As for the groups: the work a thousand times the tilts that
+          // count as parallel.
+          for (unsigned int i = 0; i < slide.n_sets; ++i)
+            if (std::abs(work[i]) > 1e3 * parallel * scale[i])
+              {
+                const unsigned int node = first_node[i];
+                // Named the way the loads push.
+                std::array<double, dim> t = slide.direction;
+                for (double &x : t)
+                  x = work[i] < 0 ? -x : x;
+                std::ostringstream proof;
+                proof.precision(2);
+                proof << "the loads do work along a motion that no support "
+                         "or joint resists, the translation along "
+                      << point_text<dim>(t) << " of block "
+                      << contacts.node_block[node] << " (a node at "
+                      << point_text<dim>(contacts.node_position[node]) << ")"
+                      << (n_blocks[i] > 1 ?
+                            " and the " + quantity(n_blocks[i] - 1, "block") +
+                              (n_blocks[i] == 2 ? " that slides" :
+                                                  " that slide") +
+                              " with it along their joints" :
+                            std::string(" sliding along its joints"))
+                      << ": their work along it is "
+                      << std::abs(work[i]) / scale[i]
+                      << " of sum |f| |u|, and it changes no gap by more "
+                         "than "
+                      << parallel
+                      << " of the displacement (found from the supports and "
+                         "the loads before solving)";
+                return proof.str();
+              }
+        }
+      return "";
+    }
   } // namespace
 
   template <int dim>
@@ -477,9 +630,60 @@ namespace unilateral::masonry
   }
 
   template <int dim>
+  std::vector<FreeSlides<dim>>
+  free_slides(const ContactSet<dim> &contacts)
+  {
+    if (contacts.node_block.empty())
+      return {};
+    const unsigned int n_blocks = *std::max_element(contacts.node_block.begin(),
+                                                    contacts.node_block.end()) +
+                                  1;
+    std::vector<FreeSlides<dim>> result;
+    for (const std::array<double, dim> &t : slide_directions(contacts))
+      {
+        // Blocks whose joint is not parallel to t slide together; a
+        // support not parallel to t holds their set.
+        BlockGroups sets(n_blocks);
+        for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
+          if (contacts.constraints[k].kind == ConstraintKind::joint &&
+              std::abs(dot<dim>(contacts.constraints[k].normal, t)) > parallel)
+            sets.join(contacts.blocks[k][0], contacts.blocks[k][1]);
+        std::vector<char> held(n_blocks, 0);
+        const auto        hold = [&](const unsigned int node) {
+          held[sets.root(contacts.node_block[node])] = 1;
+        };
+        for (const HeldNode<dim> &h : contacts.held)
+          hold(h.node);
+        for (const Roller<dim> &r : contacts.rollers)
+          if (std::abs(dot<dim>(r.normal, t)) > parallel)
+            hold(r.node);
+        for (const UnilateralConstraint<dim> &s : contacts.constraints)
+          if (s.kind == ConstraintKind::signorini &&
+              std::abs(dot<dim>(s.normal, t)) > parallel)
+            hold(s.lower);
+
+        FreeSlides<dim> slides;
+        slides.direction = t;
+        slides.set_of_block.assign(n_blocks, FreeSlides<dim>::none);
+        std::vector<unsigned int> set_of_root(n_blocks, FreeSlides<dim>::none);
+        for (unsigned int b = 0; b < n_blocks; ++b)
+          if (const unsigned int root = sets.root(b); !held[root])
+            {
+              if (set_of_root[root] == FreeSlides<dim>::none)
+                set_of_root[root] = slides.n_sets++;
+              slides.set_of_block[b] = set_of_root[root];
+            }
+        if (slides.n_sets > 0)
+          result.push_back(std::move(slides));
+      }
+    return result;
+  }
+
+  template <int dim>
   std::string
-  loads_driving_a_free_motion(const ContactSet<dim>     &contacts,
-                              const std::vector<double> &load)
+  loads_driving_a_free_motion(const ContactSet<dim>              &contacts,
+                              const std::vector<FreeSlides<dim>> &slides,
+                              const std::vector<double>          &load)
   {
     std::vector<unsigned int>     group_of_node;
     const std::vector<Group<dim>> groups =
@@ -490,16 +694,18 @@ namespace unilateral::masonry
       along_motions(contacts, groups, group_of_node, load, v);
     for (std::size_t i = 0; i < groups.size(); ++i)
       {
-        // A proof only where v is free to the rounding of the nodes'
-        // positions and the faces' normals (larger for a structure far
-        // from the origin), and the loads' work is far above the rounding
-        // of its sum. work / scale is the sine of the slope that a block
+        // A proof only where v is free to a thousand times the rounding of
+        // the nodes' positions relative to the group's size (larger for a
+        // structure far from the origin), and the loads' work is a
+        // thousand times that: a support tilted by theta against v holds
+        // loads whose work along v is up to theta of their size (a block in
+        // a V-groove). work / scale is the sine of the slope that a block
         // slides down.
         const AlongMotion &a = along[i];
         const double       rounding =
-          1e-10 * std::max(1.0, a.farthest / groups[i].size);
-        if (!(a.changed <= rounding * a.largest) ||
-            !(std::abs(a.work) > 1e-10 * a.scale))
+          epsilon * std::max(1.0, a.farthest / groups[i].size);
+        if (!(a.changed <= 1e3 * rounding * a.largest) ||
+            !(std::abs(a.work) > 1e6 * rounding * a.scale))
           continue;
         std::ostringstream proof;
         proof.precision(2);
@@ -514,15 +720,21 @@ namespace unilateral::masonry
                  "the loads before solving)";
         return proof.str();
       }
-    return "";
+    return loads_driving_a_slide(contacts, slides, load);
   }
 
+  template std::vector<FreeSlides<2>>
+  free_slides(const ContactSet<2> &contacts);
+  template std::vector<FreeSlides<3>>
+  free_slides(const ContactSet<3> &contacts);
   template std::string
-  loads_driving_a_free_motion(const ContactSet<2>       &contacts,
-                              const std::vector<double> &load);
+  loads_driving_a_free_motion(const ContactSet<2>              &contacts,
+                              const std::vector<FreeSlides<2>> &slides,
+                              const std::vector<double>        &load);
   template std::string
-  loads_driving_a_free_motion(const ContactSet<3>       &contacts,
-                              const std::vector<double> &load);
+  loads_driving_a_free_motion(const ContactSet<3>              &contacts,
+                              const std::vector<FreeSlides<3>> &slides,
+                              const std::vector<double>        &load);
   template std::vector<std::string>
   free_rigid_motions(const ContactSet<2> &contacts);
   template std::vector<std::string>

@@ -296,6 +296,7 @@ namespace unilateral::masonry
                     std::to_string(problem_sizes.n_constraints) +
                     " constraints");
     free_motions = free_rigid_motions(contacts);
+    slides       = free_slides(contacts);
     for (const std::string &line : free_motions)
       context.stage(registered_name, "note: " + line);
   }
@@ -374,7 +375,7 @@ namespace unilateral::masonry
   {
     // The loads cost an assembly of the residual: only where something
     // moves freely.
-    if (free_motions.empty())
+    if (free_motions.empty() && slides.empty())
       return "";
     std::vector<double> load = residual_forces<dim>(
       state->discretisation,
@@ -382,7 +383,8 @@ namespace unilateral::masonry
       std::vector<double>(state->contacts.node_of_dof.size(), 0.0));
     for (double &f : load)
       f = -f;
-    driven_motion = loads_driving_a_free_motion<dim>(state->contacts, load);
+    driven_motion =
+      loads_driving_a_free_motion<dim>(state->contacts, slides, load);
     return driven_motion;
   }
 

@@ -32,20 +32,53 @@ namespace unilateral::masonry
   free_rigid_motions(const ContactSet<dim> &contacts);
 
   /**
+   * Sets of blocks that can slide along their joints, in one direction: a
+   * translation t of the set keeps every gap between its blocks, and
+   * changes none of its joints with the other blocks if their normals are
+   * perpendicular to t (|n . t| within a thousand times the rounding of a
+   * unit vector), nor of its supports. A course of a wall without side
+   * rollers slides so on the course below; the groups of
+   * free_rigid_motions() do not show it, for the wall as a whole is held.
+   * The directions tried are those perpendicular to the joints' normals (in
+   * 3D two in the plane of each normal, and the cross product of each
+   * pair), for the 16 most frequent normals.
+   */
+  template <int dim>
+  struct FreeSlides
+  {
+    std::array<double, dim> direction{};
+    /// For each block, the index of its set; none where a support holds
+    /// the set.
+    std::vector<unsigned int> set_of_block;
+    unsigned int              n_sets = 0;
+
+    static constexpr unsigned int none = static_cast<unsigned int>(-1);
+  };
+
+  /// The directions along which some set of blocks can slide, with those
+  /// sets.
+  template <int dim>
+  std::vector<FreeSlides<dim>>
+  free_slides(const ContactSet<dim> &contacts);
+
+  /**
    * The proof that the structure has no equilibrium, if the loads do work
-   * along one of those free motions: a rigid motion of a group changes
-   * neither the elastic energy (the elements reproduce it exactly) nor any
-   * gap, so the energy falls without bound along it. Empty if they do no
-   * work along any, to the rounding of their sum (1e-10 of sum |f| |u|),
-   * or if the motion changes a gap by more than the rounding of the nodes'
-   * positions (1e-10 of its size, more far from the origin): then the
-   * solver decides. The solvers' own proof cannot see this where the
+   * along one of those free motions or slides: a rigid motion of a group
+   * (or a translation of a set) changes neither the elastic energy (the
+   * elements reproduce it exactly) nor any gap, so the energy falls
+   * without bound along it. Only where the motion changes no gap by more
+   * than a thousand times the rounding of the nodes' positions relative to
+   * the group's size (epsilon times the largest coordinate over the size:
+   * more far from the origin), and the loads' work along it exceeds a
+   * thousand times that (of sum |f| |u|); else empty, and the solver
+   * decides. The solvers' own proof cannot see this where the
    * factorisation meets a pivot above round-off along the motion and
    * moves the structure by 1e9 (a block on a frictionless slope).
    * @p load: the nodal loads f at every DOF.
    */
   template <int dim>
   std::string
-  loads_driving_a_free_motion(const ContactSet<dim>     &contacts,
-                              const std::vector<double> &load);
+  loads_driving_a_free_motion(const ContactSet<dim>              &contacts,
+                              const std::vector<FreeSlides<dim>> &slides,
+                              const std::vector<double>          &load);
 } // namespace unilateral::masonry

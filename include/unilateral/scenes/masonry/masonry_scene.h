@@ -3,6 +3,7 @@
 #include <unilateral/lcp/report.h>
 #include <unilateral/scenes/masonry/change_of_variables.h>
 #include <unilateral/scenes/masonry/contact_detection.h>
+#include <unilateral/scenes/masonry/free_motions.h>
 #include <unilateral/scenes/masonry/parameters.h>
 #include <unilateral/scenes/scene.h>
 
@@ -295,6 +296,8 @@ namespace unilateral::masonry
     /// The groups of blocks that some rigid motion moves past every support
     /// (free_rigid_motions), one line each.
     std::vector<std::string> free_motions;
+    /// Sets of blocks that can slide along their joints (free_slides).
+    std::vector<FreeSlides<dim>> slides;
     /// The proof that the loads drive one of them, or empty.
     std::string driven_motion;
 
