@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 using namespace application_test;
@@ -145,6 +146,36 @@ main()
   // 2e-12: the mesh is read and the square (its base fixed) solved.
   bad("a mesh far from the origin",
       square_at("100000000000000", "100000000000001"));
+  // A box of 2 x 2 x 2 hexahedra of edge 0.5 (cells of the orientation
+  // GridIn turns), 1e5 from the origin: GridIn's own check fails with an
+  // internal error (at 3e4 it reads the box); the message says that the
+  // distance may be why (a review).
+  {
+    std::ostringstream box;
+    box.precision(17);
+    box << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n"
+           "2 101 \"base\"\n$EndPhysicalNames\n$Nodes\n27\n";
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+          box << 9 * k + 3 * j + i + 1 << " " << 1e5 + 0.5 * i << " "
+              << 1e5 + 0.5 * j << " " << 1e5 + 0.5 * k << "\n";
+    box << "$EndNodes\n$Elements\n9\n1 3 2 101 101 1 10 11 2\n";
+    int element = 2;
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+          {
+            const int n = 9 * k + 3 * j + i + 1;
+            box << element++ << " 5 2 1 1 " << n << " " << n + 1 << " " << n + 4
+                << " " << n + 3 << " " << n + 9 << " " << n + 10 << " "
+                << n + 13 << " " << n + 12 << "\n";
+          }
+    box << "$EndElements\n";
+    bad("a box of hexahedra far from the origin",
+        box.str(),
+        "  set Dimension = 3\n");
+  }
   {
     write("near.msh", square_at("10000", "10001"));
     write("near.prm",

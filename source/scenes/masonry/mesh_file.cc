@@ -43,7 +43,9 @@ namespace unilateral::masonry
       std::map<int, std::string> cell_tag_names;
       std::map<std::string, int> boundary_tag_names;
       double                     smallest_edge = 0;
-      bool                       simplex       = false;
+      /// The largest coordinate of a cell's node.
+      double farthest = 0;
+      bool   simplex  = false;
     };
 
     [[noreturn]] void
@@ -436,8 +438,12 @@ namespace unilateral::masonry
                        " has z != 0); for a 3D mesh (hexahedra or "
                        "tetrahedra) set 'Masonry/Dimension = 3'");
               for (unsigned int d = 0; d < dim; ++d)
-                cell.centroid[d] +=
-                  found->second[d] / static_cast<double>(element.nodes.size());
+                {
+                  cell.centroid[d] += found->second[d] /
+                                      static_cast<double>(element.nodes.size());
+                  scan.farthest =
+                    std::max(scan.farthest, std::abs(found->second[d]));
+                }
             }
           for (std::size_t a = 1; a < element.nodes.size(); ++a)
             scan.smallest_edge = std::min(scan.smallest_edge,
@@ -926,9 +932,30 @@ namespace unilateral::masonry
         const auto trace = reason.find("Stacktrace:");
         if (trace != std::string::npos)
           reason.erase(trace);
+        // deal.II's ExcInternalError says, at length, to write to its
+        // mailing list.
+        if (reason.find("which is used in many places") != std::string::npos)
+          reason = "an internal check of deal.II failed";
+        // Far from the origin GridIn's own checks of the cells fail with
+        // an internal error (a 3D box of edge 0.5 at 1e5; at 3e4 it reads
+        // it): say so where that may be why.
+        std::string far;
+        if (scan.smallest_edge > 0 && std::numeric_limits<double>::epsilon() *
+                                          scan.farthest / scan.smallest_edge >
+                                        1e-12)
+          {
+            std::ostringstream hint;
+            hint << std::setprecision(3) << " (its nodes lie up to "
+                 << scan.farthest << " from the origin, "
+                 << scan.farthest / scan.smallest_edge
+                 << " times its shortest edge, where deal.II's checks of the "
+                    "cells lose precision: move the mesh near the origin, "
+                    "subtracting a point of the structure from every node)";
+            far = hint.str();
+          }
         fail(file_name,
              "deal.II's GridIn cannot read it: " +
-               dealii::Utilities::trim(reason));
+               dealii::Utilities::trim(reason) + far);
       }
 
     // Far from the origin, double precision keeps a node's coordinates
