@@ -121,7 +121,8 @@ namespace
    * weight, so this is in equilibrium (the reactions balance the loads; a
    * review). Its rotation about the far point where the sides' normals
    * meet is nearly free (the Gram matrix's eigenvalue 2.5e-11 of the
-   * largest), and far from the origin the scene once took it as free.
+   * largest): the scene once noted it as free, and far from the origin
+   * proved 'no equilibrium' along it.
    */
   std::string
   block_in_groove(const double shift)
@@ -258,7 +259,10 @@ main()
     {
       const Result groove = run({block_in_groove(shift)});
       std::cout << "a block in a V-groove of 5e-6, pushed by 1e-6, at " << shift
-                << ": exit code " << groove.code << "\n";
+                << ": exit code " << groove.code << ", noted as free: "
+                << yes_no(groove.out.find("can move freely") !=
+                          std::string::npos)
+                << "\n";
     }
 
   // Courses that slide on each other (free_slides): a wall on a fixed base

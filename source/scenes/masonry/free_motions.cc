@@ -19,9 +19,9 @@ namespace unilateral::masonry
       return dim == 2 ? 3 : 6;
     }
 
-    template <int dim>
-    using RigidMatrix =
-      Eigen::Matrix<double, n_rigid_motions(dim), n_rigid_motions(dim)>;
+    /// The rounding of a unit quantity.
+    constexpr double epsilon = std::numeric_limits<double>::epsilon();
+
     template <int dim>
     using RigidVector = Eigen::Matrix<double, n_rigid_motions(dim), 1>;
 
@@ -143,28 +143,40 @@ namespace unilateral::masonry
     }
 
     /**
-     * A basis of the null space of @p gram (eigenvalues below 1e-10 of the
-     * largest), translations first: the eigenvectors of a null space of
-     * more than one dimension mix translations and rotations at random, so
-     * the pure translations in it are found first (where the rotation
-     * parts vanish) and the rest is made orthogonal to them.
+     * A basis of the null space of the support rows @p rows: the right
+     * singular vectors whose singular value is below @p rounding (that of
+     * the rows' entries, which are of size 1) times a thousand times the
+     * root of their number. The singular values of the rows, not the
+     * eigenvalues of their Gram matrix, whose rounding (epsilon of the
+     * largest) is that of a singular value of 1e-8: a block in a V-groove
+     * of 5e-6 turns about a far point by a motion that the groove resists,
+     * whose Gram eigenvalue 2.5e-11 of the largest was once taken as zero
+     * (a review). Translations first: the vectors of a null space of more
+     * than one dimension mix translations and rotations at random, so the
+     * pure translations in it are found first (where the rotation parts
+     * vanish) and the rest is made orthogonal to them.
      */
     template <int dim>
     std::vector<RigidVector<dim>>
-    free_basis(const RigidMatrix<dim> &gram)
+    free_basis(const std::vector<RigidVector<dim>> &rows, const double rounding)
     {
-      constexpr int n_rotations = n_rigid_motions(dim) - dim;
-      const Eigen::SelfAdjointEigenSolver<RigidMatrix<dim>> eigen(gram);
-      const double     largest = eigen.eigenvalues().maxCoeff();
+      constexpr int   n_rotations = n_rigid_motions(dim) - dim;
+      constexpr int   n           = n_rigid_motions(dim);
+      Eigen::MatrixXd R(std::max<std::size_t>(rows.size(), n), n);
+      R.setZero();
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        R.row(r) = rows[r].transpose();
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullV);
+      const double     zero = 1e3 * rounding * std::sqrt(double(rows.size()));
       std::vector<int> null;
-      for (int i = 0; i < int(n_rigid_motions(dim)); ++i)
-        if (!(eigen.eigenvalues()[i] > 1e-10 * largest))
+      for (int i = 0; i < n; ++i)
+        if (!(svd.singularValues()[i] > zero))
           null.push_back(i);
       if (null.empty())
         return {};
-      Eigen::MatrixXd N(n_rigid_motions(dim), null.size());
+      Eigen::MatrixXd N(n, null.size());
       for (std::size_t j = 0; j < null.size(); ++j)
-        N.col(j) = eigen.eigenvectors().col(null[j]);
+        N.col(j) = svd.matrixV().col(null[j]);
       // In the coordinates a of v = N a: the rotation parts' Gram matrix,
       // zero along the translations.
       const Eigen::MatrixXd rotations = N.bottomRows(n_rotations);
@@ -187,7 +199,10 @@ namespace unilateral::masonry
       double                    size       = 0;
       unsigned int              n_nodes    = 0;
       unsigned int              first_node = 0;
-      RigidMatrix<dim>          gram       = RigidMatrix<dim>::Zero();
+      /// The largest coordinate of its nodes.
+      double farthest = 0;
+      /// Its supports' rows in the basis of rigid motions (support_row).
+      std::vector<RigidVector<dim>> rows;
       /// A basis of its free motions (empty if the supports hold it).
       std::vector<RigidVector<dim>> motions;
       /// "block 3 (a node at (1, 0)) and the 2 blocks joined to it".
@@ -274,7 +289,12 @@ namespace unilateral::masonry
           Group<dim> &g        = group[groups.root(contacts.node_block[a])];
           double      distance = 0;
           for (unsigned int c = 0; c < dim; ++c)
-            distance += std::pow(contacts.node_position[a][c] - g.centre[c], 2);
+            {
+              distance +=
+                std::pow(contacts.node_position[a][c] - g.centre[c], 2);
+              g.farthest =
+                std::max(g.farthest, std::abs(contacts.node_position[a][c]));
+            }
           g.size = std::max(g.size, std::sqrt(distance));
         }
 
@@ -286,7 +306,7 @@ namespace unilateral::masonry
                            contacts.node_position[node],
                            g.centre,
                            std::max(g.size, 1e-300));
-        g.gram += row * row.transpose();
+        g.rows.push_back(row);
       };
       for (const HeldNode<dim> &h : contacts.held)
         for (unsigned int c = 0; c < dim; ++c)
@@ -308,7 +328,10 @@ namespace unilateral::masonry
         {
           if (g.blocks.empty())
             continue;
-          g.motions = free_basis<dim>(g.gram);
+          g.motions = free_basis<dim>(
+            g.rows,
+            epsilon * std::max(1.0, g.farthest / std::max(g.size, 1e-300)));
+          g.rows = {};
           if (g.motions.empty())
             continue;
           const unsigned int first_block = contacts.node_block[g.first_node];
@@ -437,9 +460,6 @@ namespace unilateral::masonry
       return along;
     }
 
-    /// The rounding of a unit quantity.
-    constexpr double epsilon = std::numeric_limits<double>::epsilon();
-
     /**
      * The largest |n . t| for which a joint or support does not resist
      * (nor link blocks in) a slide along t: a thousand times the rounding
@@ -492,6 +512,10 @@ namespace unilateral::masonry
           return;
         for (double &x : t)
           x /= length;
+        // The same direction (up to sign) from another pair.
+        for (const std::array<double, dim> &s : directions)
+          if (std::abs(dot<dim>(s, t)) > 1 - parallel)
+            return;
         directions.push_back(t);
       };
       for (const unsigned int k : order)
@@ -697,15 +721,18 @@ namespace unilateral::masonry
         // A proof only where v is free to a thousand times the rounding of
         // the nodes' positions relative to the group's size (larger for a
         // structure far from the origin), and the loads' work is a
-        // thousand times that: a support tilted by theta against v holds
-        // loads whose work along v is up to theta of their size (a block in
-        // a V-groove). work / scale is the sine of the slope that a block
+        // thousand times the gap change measured or that rounding, and at
+        // least 1e-10: a support tilted by theta against v holds loads
+        // whose work along v is up to theta of their size (a block in a
+        // V-groove). work / scale is the sine of the slope that a block
         // slides down.
         const AlongMotion &a = along[i];
         const double       rounding =
           epsilon * std::max(1.0, a.farthest / groups[i].size);
-        if (!(a.changed <= 1e3 * rounding * a.largest) ||
-            !(std::abs(a.work) > 1e6 * rounding * a.scale))
+        const double tilt = a.changed / a.largest;
+        if (!(tilt <= 1e3 * rounding) ||
+            !(std::abs(a.work) >
+              std::max(1e-10, 1e3 * std::max(tilt, rounding)) * a.scale))
           continue;
         std::ostringstream proof;
         proof.precision(2);

@@ -19,10 +19,12 @@ namespace unilateral::masonry
    * such a group. Supports count in both directions here (that a
    * Signorini support only pushes is the solver's business).
    *
-   * Each group's free motions are the null space of the Gram matrix of its
-   * support rows in a basis of rigid motions about its centroid (dim
-   * translations and dim (dim - 1) / 2 rotations scaled by the group's
-   * size), eigenvalues below 1e-10 of the largest counting as zero.
+   * Each group's free motions are the null space of its support rows in a
+   * basis of rigid motions about its centroid (dim translations and
+   * dim (dim - 1) / 2 rotations scaled by the group's size): their singular
+   * values below a thousand times the rounding of the nodes' positions
+   * relative to that size count as zero, so that a motion a support
+   * resists only slightly (a block in a V-groove of 5e-6) is not free.
    * Returns one line per group with free motions, saying which blocks and
    * how they can move (the first ten groups, then one line counting the
    * rest); empty if every group is held.
@@ -69,11 +71,12 @@ namespace unilateral::masonry
    * without bound along it. Only where the motion changes no gap by more
    * than a thousand times the rounding of the nodes' positions relative to
    * the group's size (epsilon times the largest coordinate over the size:
-   * more far from the origin), and the loads' work along it exceeds a
-   * thousand times that (of sum |f| |u|); else empty, and the solver
-   * decides. The solvers' own proof cannot see this where the
-   * factorisation meets a pivot above round-off along the motion and
-   * moves the structure by 1e9 (a block on a frictionless slope).
+   * more far from the origin), and the loads' work along it (of
+   * sum |f| |u|) exceeds a thousand times the gap change measured or that
+   * rounding, and 1e-10; else empty, and the solver decides. The solvers' own
+   * proof cannot see this where the factorisation meets a pivot above round-off
+   * along the motion and moves the structure by 1e9 (a block on a frictionless
+   * slope).
    * @p load: the nodal loads f at every DOF.
    */
   template <int dim>
