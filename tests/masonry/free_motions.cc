@@ -30,6 +30,10 @@
 //    than the rounding of the positions there);
 //  - courses of a wall on a fixed base slide on each other under tilted
 //    gravity (free_slides), in 2D and 3D: no equilibrium, the course named.
+//  - a long block on a Signorini base of 16,000 faces, far from the
+//    origin, under gravity tilted along its base: no equilibrium before
+//    solving (the rounding of the supports' normals grows with the
+//    distance over the faces' length).
 #include "../application_test_tools.h"
 
 #include <cmath>
@@ -155,6 +159,53 @@ namespace
           "  subsection Materials\n    set Young's modulus = 1e9\n  end\n"
           "end\n");
     return "groove.prm";
+  }
+
+  /**
+   * One block 1600 x 0.2 of 16,000 cells along its base (its only
+   * support, Signorini), rotated by 0.3 rad, at (1e5, 1e5), under gravity
+   * tilted by 1e-3 along the base: it slides. The supports' normals, from
+   * rounded positions of faces of 0.1 at 1e5, carry 3e-10 (a review: the
+   * free motion was missed when its threshold ignored the faces' length).
+   */
+  std::string
+  long_block_far_away()
+  {
+    const int          n = 16000;
+    const double       a = 0.3, c = std::cos(a), s = std::sin(a);
+    std::ostringstream mesh;
+    mesh.precision(17);
+    mesh << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n"
+            "1 101 \"base\"\n$EndPhysicalNames\n$Nodes\n"
+         << 2 * (n + 1) << "\n";
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i <= n; ++i)
+        {
+          const double x = 0.1 * i - 0.05 * n, y = 0.2 * j;
+          mesh << j * (n + 1) + i + 1 << " " << 1e5 + c * x - s * y << " "
+               << 1e5 + s * x + c * y << " 0\n";
+        }
+    mesh << "$EndNodes\n$Elements\n" << 2 * n << "\n";
+    for (int i = 1; i <= n; ++i)
+      mesh << i << " 1 2 101 101 " << i << " " << i + 1 << "\n";
+    for (int i = 1; i <= n; ++i)
+      mesh << n + i << " 3 2 1 1 " << i << " " << i + 1 << " " << n + i + 2
+           << " " << n + i + 1 << "\n";
+    mesh << "$EndElements\n";
+    write("long.msh", mesh.str());
+    const double gx = c * 1e-3 + s, gy = s * 1e-3 - c;
+    write("long.prm",
+          "set Scene = masonry\nsubsection Output\n  set Directory = results\n"
+          "  set Print timings = false\n  set Progress = false\n"
+          "  set Write VTU = false\nend\nsubsection Masonry\n"
+          "  set Geometry = mesh file\n  set Mesh file = long.msh\n"
+          "  subsection Boundary conditions\n"
+          "    set Normal displacement zero =\n    set Signorini = base\n"
+          "    set Signorini gap = 0\n    set Traction boundaries =\n"
+          "    set Gravity direction = " +
+            std::to_string(gx) + ", " + std::to_string(gy) +
+            ", 0\n  end\nend\n");
+    return "long.prm";
   }
 } // namespace
 
@@ -300,6 +351,13 @@ main()
             << tilted_3d.code << ", a set of blocks slides along z: "
             << yes_no(tilted_3d.err.find("the translation along (0, 0, 1) of "
                                          "block") != std::string::npos)
+            << "\n";
+
+  const Result long_block = run({long_block_far_away()});
+  std::cout << "a block of 16,000 cells on a slope of 1e-3 at 1e5: exit code "
+            << long_block.code << ", no equilibrium before solving: "
+            << yes_no(long_block.err.find("found from the supports") !=
+                      std::string::npos)
             << "\n";
 
   std::cout << "twelve loose squares: exit code " << loose.code << ", " << named

@@ -145,7 +145,7 @@ namespace unilateral::masonry
     /**
      * A basis of the null space of the support rows @p rows: the right
      * singular vectors whose singular value is below @p rounding (that of
-     * the rows' entries, which are of size 1) times a thousand times the
+     * the rows' entries, which are of size 1) times a hundred times the
      * root of their number. The singular values of the rows, not the
      * eigenvalues of their Gram matrix, whose rounding (epsilon of the
      * largest) is that of a singular value of 1e-8: a block in a V-groove
@@ -167,7 +167,7 @@ namespace unilateral::masonry
       for (std::size_t r = 0; r < rows.size(); ++r)
         R.row(r) = rows[r].transpose();
       const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullV);
-      const double     zero = 1e3 * rounding * std::sqrt(double(rows.size()));
+      const double     zero = 1e2 * rounding * std::sqrt(double(rows.size()));
       std::vector<int> null;
       for (int i = 0; i < n; ++i)
         if (!(svd.singularValues()[i] > zero))
@@ -201,6 +201,16 @@ namespace unilateral::masonry
       unsigned int              first_node = 0;
       /// The largest coordinate of its nodes.
       double farthest = 0;
+      /**
+       * The rounding of its support rows (of size 1): epsilon times the
+       * largest coordinate over the shortest support face, estimated as
+       * the group's size over the number of rows (2D) or its root (3D).
+       * Joints' normals are snapped to their direction classes, supports'
+       * are not: on a long support of many short faces far from the
+       * origin they carry epsilon times that distance over the face's
+       * length (a review: 16,000 faces of 0.1 at 1e5).
+       */
+      double rounding = 0;
       /// Its supports' rows in the basis of rigid motions (support_row).
       std::vector<RigidVector<dim>> rows;
       /// A basis of its free motions (empty if the supports hold it).
@@ -328,10 +338,15 @@ namespace unilateral::masonry
         {
           if (g.blocks.empty())
             continue;
-          g.motions = free_basis<dim>(
-            g.rows,
-            epsilon * std::max(1.0, g.farthest / std::max(g.size, 1e-300)));
-          g.rows = {};
+          const double faces_along =
+            std::max(1.0,
+                     dim == 2 ? double(g.rows.size()) :
+                                std::sqrt(double(g.rows.size())));
+          g.rounding = epsilon *
+                       std::max(1.0, g.farthest / std::max(g.size, 1e-300)) *
+                       faces_along;
+          g.motions = free_basis<dim>(g.rows, g.rounding);
+          g.rows    = {};
           if (g.motions.empty())
             continue;
           const unsigned int first_block = contacts.node_block[g.first_node];
@@ -357,11 +372,10 @@ namespace unilateral::masonry
     /// What the loads and the gaps do along one motion of a group.
     struct AlongMotion
     {
-      double work     = 0; ///< the loads' work W = f . u
-      double scale    = 0; ///< sum over the nodes of |f| |u|
-      double largest  = 0; ///< the largest |u| at a node
-      double farthest = 0; ///< the largest coordinate of a node
-      double changed  = 0; ///< the largest change of a gap
+      double work    = 0; ///< the loads' work W = f . u
+      double scale   = 0; ///< sum over the nodes of |f| |u|
+      double largest = 0; ///< the largest |u| at a node
+      double changed = 0; ///< the largest change of a gap
     };
 
     /**
@@ -421,15 +435,12 @@ namespace unilateral::masonry
               {
                 f[c] = load[contacts.node_dofs[a][c]];
                 along[i].work += f[c] * u[c];
-                along[i].farthest =
-                  std::max(along[i].farthest,
-                           std::abs(contacts.node_position[a][c]));
               }
             along[i].scale += norm(f) * norm(u);
             along[i].largest = std::max(along[i].largest, norm(u));
           }
 
-      // The gaps: the supports' (whose rows the Gram matrix counted) and
+      // The gaps: the supports' (whose rows free_basis() took) and
       // the joints' (whose two nodes coincide only to 'Coincidence
       // tolerance', so that a rotation moves them apart a little).
       const auto change = [&](const unsigned int node, const double amount) {
@@ -718,19 +729,17 @@ namespace unilateral::masonry
       along_motions(contacts, groups, group_of_node, load, v);
     for (std::size_t i = 0; i < groups.size(); ++i)
       {
-        // A proof only where v is free to a thousand times the rounding of
-        // the nodes' positions relative to the group's size (larger for a
-        // structure far from the origin), and the loads' work is a
-        // thousand times the gap change measured or that rounding, and at
-        // least 1e-10: a support tilted by theta against v holds loads
-        // whose work along v is up to theta of their size (a block in a
-        // V-groove). work / scale is the sine of the slope that a block
-        // slides down.
-        const AlongMotion &a = along[i];
-        const double       rounding =
-          epsilon * std::max(1.0, a.farthest / groups[i].size);
-        const double tilt = a.changed / a.largest;
-        if (!(tilt <= 1e3 * rounding) ||
+        // A proof only where v is free to a hundred times the rounding of
+        // the support rows (Group::rounding: larger for a structure far
+        // from the origin), and the loads' work is a thousand times the gap
+        // change measured or that rounding, and at least 1e-10: a support
+        // tilted by theta against v holds loads whose work along v is up to
+        // theta of their size (a block in a V-groove). work / scale is the sine
+        // of the slope that a block slides down.
+        const AlongMotion &a        = along[i];
+        const double       rounding = groups[i].rounding;
+        const double       tilt     = a.changed / a.largest;
+        if (!(tilt <= 1e2 * rounding) ||
             !(std::abs(a.work) >
               std::max(1e-10, 1e3 * std::max(tilt, rounding)) * a.scale))
           continue;

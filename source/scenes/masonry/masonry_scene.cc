@@ -447,11 +447,13 @@ namespace unilateral::masonry
         !proved_before_solving(report) &&
         std::abs(c.normal_gap) <= 1e-10 * max_displacement &&
         std::abs(c.contact_force) <= 1e-10 * largest_force;
+    // Also where the run did not converge: the loads are then still the
+    // loads, and the imbalance says how far the answer given is from
+    // equilibrium (summary.json once said load 0 and imbalance 0, which
+    // read as balanced; a review).
+    compute_statics();
     if (report.converged())
-      {
-        compute_statics();
-        check_statics(context.solver.kkt_tolerance, report);
-      }
+      check_statics(context.solver.kkt_tolerance, report);
   }
 
   /**

@@ -22,9 +22,11 @@ namespace unilateral::masonry
    * Each group's free motions are the null space of its support rows in a
    * basis of rigid motions about its centroid (dim translations and
    * dim (dim - 1) / 2 rotations scaled by the group's size): their singular
-   * values below a thousand times the rounding of the nodes' positions
-   * relative to that size count as zero, so that a motion a support
-   * resists only slightly (a block in a V-groove of 5e-6) is not free.
+   * values below a hundred times the rounding of the rows count as zero
+   * (epsilon times the largest coordinate over the supports' face length,
+   * estimated from the size and the number of rows), so that a motion a
+   * support resists only slightly (a block in a V-groove of 5e-6 near the
+   * origin) is not free.
    * Returns one line per group with free motions, saying which blocks and
    * how they can move (the first ten groups, then one line counting the
    * rest); empty if every group is held.
@@ -69,9 +71,8 @@ namespace unilateral::masonry
    * (or a translation of a set) changes neither the elastic energy (the
    * elements reproduce it exactly) nor any gap, so the energy falls
    * without bound along it. Only where the motion changes no gap by more
-   * than a thousand times the rounding of the nodes' positions relative to
-   * the group's size (epsilon times the largest coordinate over the size:
-   * more far from the origin), and the loads' work along it (of
+   * than a hundred times the rounding of the support rows (above; more
+   * far from the origin), and the loads' work along it (of
    * sum |f| |u|) exceeds a thousand times the gap change measured or that
    * rounding, and 1e-10; else empty, and the solver decides. The solvers' own
    * proof cannot see this where the factorisation meets a pivot above round-off
