@@ -219,6 +219,28 @@ namespace unilateral::masonry
       std::string who;
     };
 
+    template <int dim>
+    double
+    dot(const std::array<double, dim> &a, const std::array<double, dim> &b)
+    {
+      double sum = 0;
+      for (unsigned int c = 0; c < dim; ++c)
+        sum += a[c] * b[c];
+      return sum;
+    }
+
+    /// The number of blocks (their indices run from 0); 0 without nodes.
+    template <int dim>
+    unsigned int
+    n_blocks_of(const ContactSet<dim> &contacts)
+    {
+      return contacts.node_block.empty() ?
+               0 :
+               *std::max_element(contacts.node_block.begin(),
+                                 contacts.node_block.end()) +
+                 1;
+    }
+
     template <std::size_t n>
     double
     norm(const std::array<double, n> &u)
@@ -269,11 +291,8 @@ namespace unilateral::masonry
       const std::size_t n_nodes = contacts.node_position.size();
       if (n_nodes == 0)
         return {};
-      const unsigned int n_blocks =
-        *std::max_element(contacts.node_block.begin(),
-                          contacts.node_block.end()) +
-        1;
-      BlockGroups groups(n_blocks);
+      const unsigned int n_blocks = n_blocks_of(contacts);
+      BlockGroups        groups(n_blocks);
       for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
         if (contacts.constraints[k].kind == ConstraintKind::joint)
           groups.join(contacts.blocks[k][0], contacts.blocks[k][1]);
@@ -449,13 +468,9 @@ namespace unilateral::masonry
       };
       const auto normal_part = [&](const std::array<double, dim> &normal,
                                    const unsigned int             node) {
-        if (group_of_node[node] >= groups.size())
-          return 0.0;
-        const auto u     = motion(node);
-        double     n_dot = 0;
-        for (unsigned int c = 0; c < dim; ++c)
-          n_dot += normal[c] * u[c];
-        return n_dot;
+        return group_of_node[node] < groups.size() ?
+                 dot<dim>(normal, motion(node)) :
+                 0.0;
       };
       for (const HeldNode<dim> &h : contacts.held)
         if (group_of_node[h.node] < groups.size())
@@ -479,16 +494,6 @@ namespace unilateral::masonry
      * of 1 / theta times it.
      */
     constexpr double parallel = 1e3 * epsilon;
-
-    template <int dim>
-    double
-    dot(const std::array<double, dim> &a, const std::array<double, dim> &b)
-    {
-      double sum = 0;
-      for (unsigned int c = 0; c < dim; ++c)
-        sum += a[c] * b[c];
-      return sum;
-    }
 
     /**
      * The directions to try slides along: perpendicular to the most
@@ -668,11 +673,9 @@ namespace unilateral::masonry
   std::vector<FreeSlides<dim>>
   free_slides(const ContactSet<dim> &contacts)
   {
-    if (contacts.node_block.empty())
+    const unsigned int n_blocks = n_blocks_of(contacts);
+    if (n_blocks == 0)
       return {};
-    const unsigned int n_blocks = *std::max_element(contacts.node_block.begin(),
-                                                    contacts.node_block.end()) +
-                                  1;
     std::vector<FreeSlides<dim>> result;
     for (const std::array<double, dim> &t : slide_directions(contacts))
       {

@@ -46,6 +46,27 @@ namespace unilateral::masonry
       /// The largest coordinate of a cell's node.
       double farthest = 0;
       bool   simplex  = false;
+
+      /// How far double precision keeps the cells' geometry far from the
+      /// origin, relative to their size: epsilon |x| / h.
+      double
+      geometry_precision() const
+      {
+        return std::numeric_limits<double>::epsilon() * farthest /
+               smallest_edge;
+      }
+
+      /// "its nodes lie up to 1e+05 from the origin, 2e+05 times its
+      /// shortest edge", for messages.
+      std::string
+      distance_text() const
+      {
+        std::ostringstream text;
+        text << std::setprecision(3) << "its nodes lie up to " << farthest
+             << " from the origin, " << farthest / smallest_edge
+             << " times its shortest edge";
+        return text.str();
+      }
     };
 
     [[noreturn]] void
@@ -939,20 +960,13 @@ namespace unilateral::masonry
         // Far from the origin GridIn's own checks of the cells fail with
         // an internal error (a 3D box of edge 0.5 at 1e5; at 3e4 it reads
         // it): say so where that may be why.
-        std::string far;
-        if (scan.smallest_edge > 0 && std::numeric_limits<double>::epsilon() *
-                                          scan.farthest / scan.smallest_edge >
-                                        1e-12)
-          {
-            std::ostringstream hint;
-            hint << std::setprecision(3) << " (its nodes lie up to "
-                 << scan.farthest << " from the origin, "
-                 << scan.farthest / scan.smallest_edge
-                 << " times its shortest edge, where deal.II's checks of the "
-                    "cells lose precision: move the mesh near the origin, "
-                    "subtracting a point of the structure from every node)";
-            far = hint.str();
-          }
+        const std::string far =
+          scan.smallest_edge > 0 && scan.geometry_precision() > 1e-12 ?
+            " (" + scan.distance_text() +
+              ", where deal.II's checks of the cells lose precision: move "
+              "the mesh near the origin, subtracting a point of the "
+              "structure from every node)" :
+            "";
         fail(file_name,
              "deal.II's GridIn cannot read it: " +
                dealii::Utilities::trim(reason) + far);
@@ -963,28 +977,18 @@ namespace unilateral::masonry
     // to epsilon |x| / h relative: the stiffness with them (measured:
     // benchmarks/stress/README.md, "Input checks of 2026-11-27"). Refused
     // where that exceeds the default KKT tolerance.
-    {
-      double farthest = 0;
-      for (const auto &vertex : file_mesh.get_vertices())
-        for (unsigned int d = 0; d < dim; ++d)
-          farthest = std::max(farthest, std::abs(vertex[d]));
-      const double geometry_precision =
-        std::numeric_limits<double>::epsilon() * farthest / scan.smallest_edge;
-      // (A collapsed edge is refused below, with its own message.)
-      if (scan.smallest_edge > 0 && geometry_precision > 1e-8)
-        {
-          std::ostringstream message;
-          message << std::setprecision(3) << "its nodes lie up to " << farthest
-                  << " from the origin, " << farthest / scan.smallest_edge
-                  << " times its shortest edge: double precision keeps the "
-                     "cells' geometry only to "
-                  << geometry_precision
-                  << " of their size, and the stiffness with it; move the "
-                     "mesh near the origin (subtract a point of the "
-                     "structure from every node)";
-          fail(file_name, message.str());
-        }
-    }
+    // (A collapsed edge is refused below, with its own message.)
+    if (scan.smallest_edge > 0 && scan.geometry_precision() > 1e-8)
+      {
+        std::ostringstream message;
+        message << std::setprecision(3) << scan.distance_text()
+                << ": double precision keeps the cells' geometry only to "
+                << scan.geometry_precision()
+                << " of their size, and the stiffness with it; move the "
+                   "mesh near the origin (subtract a point of the "
+                   "structure from every node)";
+        fail(file_name, message.str());
+      }
 
     // The entity and physical tag of each of GridIn's cells, found by its
     // centroid.
