@@ -141,7 +141,8 @@ def run(executable, geometry, m, method, ranks, arguments, directory):
                 "coarse_factorisation_seconds", "coarse_solve_seconds",
                 "coarse_solves", "products_with_F_seconds", "subdomains",
                 "multipliers", "most_subdomains_on_a_rank",
-                "factorisation_ranks"):
+                "factorisation_ranks", "lumped_products",
+                "lumped_products_seconds"):
         if key in figures:
             result[key] = figures[key]
     if "ranks" in summary:

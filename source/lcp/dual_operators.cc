@@ -271,17 +271,32 @@ namespace unilateral::lcp
   {
     Stopwatch watch(product_seconds);
     ++n_products;
+    return apply_blockwise(Local::pseudo_inverse, l);
+  }
+
+  Vector
+  DualOperators::apply_lumped(const Vector &l) const
+  {
+    Stopwatch watch(lumped_seconds);
+    ++n_lumped;
+    return apply_blockwise(Local::stiffness, l);
+  }
+
+  Vector
+  DualOperators::apply_blockwise(const Local local, const Vector &l) const
+  {
     Vector y = Vector::Zero(n_multipliers());
     for (const Tearing::Group &piece : own)
       {
-        const DenseMatrix &Kplus = pseudo_inverse[piece.shape];
-        const Index        n     = static_cast<Index>(Kplus.rows());
+        const DenseMatrix &M = local == Local::pseudo_inverse ?
+                                 pseudo_inverse[piece.shape] :
+                                 torn.shapes[piece.shape].stiffness;
+        const Index        n = static_cast<Index>(M.rows());
         const auto         B =
           torn.B.middleCols(piece.first_dof, n * piece.n_subdomains);
         const Vector      x = B.transpose() * l;
         const DenseMatrix Z =
-          Kplus *
-          Eigen::Map<const DenseMatrix>(x.data(), n, piece.n_subdomains);
+          M * Eigen::Map<const DenseMatrix>(x.data(), n, piece.n_subdomains);
         y += B * Eigen::Map<const Vector>(Z.data(), Z.size());
       }
     // Reduced on rank 0 and broadcast rather than all-reduced: every rank
@@ -361,5 +376,10 @@ namespace unilateral::lcp
     report.set_figure("coarse_solve_seconds", coarse_seconds);
     report.set_figure("products_with_F", n_products);
     report.set_figure("coarse_solves", n_coarse_solves);
+    if (n_lumped > 0)
+      {
+        report.set_figure("lumped_products", n_lumped);
+        report.set_figure("lumped_products_seconds", lumped_seconds);
+      }
   }
 } // namespace unilateral::lcp

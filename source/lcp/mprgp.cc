@@ -90,12 +90,25 @@ namespace unilateral::lcp
       observer(alpha);
   }
 
+  Vector
+  Mprgp::face_direction(const Vector &x, const Vector &phi) const
+  {
+    if (!preconditioner)
+      return phi;
+    Vector z;
+    preconditioner(phi, z);
+    for (Index i = 0; i < x.size(); ++i)
+      if (!(x[i] > lower[i]))
+        z[i] = 0;
+    return z;
+  }
+
   void
   Mprgp::restart(const Vector &x)
   {
     g = product(x) - r;
     moved(std::numeric_limits<double>::quiet_NaN());
-    p = free_gradient(x);
+    p = face_direction(x, free_gradient(x));
   }
 
   // The iterate is proportional: a conjugate gradient step on the free set,
@@ -117,8 +130,8 @@ namespace unilateral::lcp
         x -= alpha_cg * p;
         moved(alpha_cg);
         g -= alpha_cg * Hp;
-        const Vector phi = free_gradient(x);
-        p                = phi - (phi.dot(Hp) / pHp) * p;
+        const Vector z = face_direction(x, free_gradient(x));
+        p              = z - (z.dot(Hp) / pHp) * p;
         return true;
       }
     x -= alpha_f * p;
@@ -183,7 +196,7 @@ namespace unilateral::lcp
     x -= alpha * beta;
     moved(alpha);
     g -= alpha * Hd;
-    p = free_gradient(x);
+    p = face_direction(x, free_gradient(x));
     return true;
   }
 

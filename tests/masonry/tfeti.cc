@@ -14,14 +14,16 @@
 // iterations where TFETI's active set is right, so that is checked too (a
 // wrong dual still ends exact, after many more).
 // MPRGP's adaptive expansion step ('TFETI/Expansion step') on running bond
-// and laminae, the same checks. Long blocks are cut into pieces glued by
-// equalities ('Tearing/Largest aspect ratio', default 2: the laminae above are
-// cut): the laminae with their blocks whole and cut give PDAS's answer, with
-// the subdomains and multipliers counted; and a U-shaped block whose upper
-// slice falls in two parts (the slice must be split, or a part would float with
-// the rigid motions of the whole slice). A 3D wall free to slide along z,
-// unloaded that way: TFETI refuses it with a message that says what to do.
-// Gravity upwards (no equilibrium): infeasible, not an iteration limit.
+// and laminae, the same checks; so FETI's lumped preconditioner in MPRGP's
+// faces ('TFETI/Preconditioner') on the three walls. Long blocks are cut into
+// pieces glued by equalities ('Tearing/Largest aspect ratio', default 2: the
+// laminae above are cut): the laminae with their blocks whole and cut give
+// PDAS's answer, with the subdomains and multipliers counted; and a U-shaped
+// block whose upper slice falls in two parts (the slice must be split, or a
+// part would float with the rigid motions of the whole slice). A 3D wall free
+// to slide along z, unloaded that way: TFETI refuses it with a message that
+// says what to do. Gravity upwards (no equilibrium): infeasible, not an
+// iteration limit.
 #include "tfeti_test_tools.h"
 
 #include <fstream>
@@ -120,6 +122,22 @@ main()
       std::cout << "  adaptive expansions taken: "
                 << yes_no(figure(result.report, "adaptive_expansions") > 0)
                 << "\n";
+    }
+
+  // The lumped preconditioner in MPRGP's faces: the same answers, and the
+  // preconditioner applied.
+  for (const std::string geometry : {"stack bond", "running bond", "laminae"})
+    {
+      const Run result =
+        against_pdas(geometry + ", m = 10, 'Preconditioner' = lumped",
+                     geometry,
+                     10,
+                     "",
+                     "tfeti",
+                     "subsection Solver\n  subsection TFETI\n    set "
+                     "Preconditioner = lumped\n  end\nend\n");
+      std::cout << "  lumped preconditioner applied: "
+                << yes_no(figure(result.report, "lumped_products") > 0) << "\n";
     }
 
   for (const std::string ratio : {"0", "2"})

@@ -99,6 +99,11 @@ namespace unilateral::lcp
     Vector
     apply_F(const Vector &l) const;
 
+    /// B K B^T l, the lumped preconditioner of FETI (Farhat & Roux): an
+    /// approximate inverse of F at the cost of a product with F.
+    Vector
+    apply_lumped(const Vector &l) const;
+
     /// (G G^T)^-1 v (counted).
     Vector
     coarse_solve(const Vector &v) const;
@@ -130,6 +135,12 @@ namespace unilateral::lcp
       return n_products;
     }
 
+    unsigned int
+    lumped_products() const
+    {
+      return n_lumped;
+    }
+
     /// The coarse problem's size and factorisation, into @p report's
     /// figures and counters.
     void
@@ -149,6 +160,18 @@ namespace unilateral::lcp
     void
     own_subdomains();
 
+    /// Which matrix of each shape apply_blockwise takes.
+    enum class Local
+    {
+      pseudo_inverse,
+      stiffness
+    };
+
+    /// The sum over the subdomains of B_s M_s B_s^T l (M_s = K_s^+ or K_s),
+    /// each rank its own, summed over the ranks.
+    Vector
+    apply_blockwise(Local local, const Vector &l) const;
+
     /// OpenBLAS on one thread while this lives (see the class comment).
     blas::ScopedThreads      one_blas_thread{1};
     const Tearing           &torn;
@@ -164,6 +187,8 @@ namespace unilateral::lcp
     Counters                    setup_counters;
     double                      setup_seconds = 0, factorisation_seconds = 0;
     mutable unsigned int        n_products = 0, n_coarse_solves = 0;
+    mutable unsigned int        n_lumped        = 0;
     mutable double              product_seconds = 0, coarse_seconds = 0;
+    mutable double              lumped_seconds = 0;
   };
 } // namespace unilateral::lcp

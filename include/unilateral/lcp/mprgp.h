@@ -68,6 +68,19 @@ namespace unilateral::lcp
       this->observer = std::move(observer);
     }
 
+    /// z = M^-1 phi for a preconditioner M of H (symmetric positive
+    /// definite); MPRGP uses it in the face (Dostal 2009, sec. 5.10): the
+    /// conjugate gradient steps on the free set F take z restricted to F,
+    /// the preconditioner of H_FF that the restriction of M^-1 is. The
+    /// expansion and proportioning steps stay unpreconditioned.
+    using Preconditioner = std::function<void(const Vector &phi, Vector &z)>;
+
+    void
+    precondition(Preconditioner preconditioner)
+    {
+      this->preconditioner = std::move(preconditioner);
+    }
+
     /// Expansion steps of the length the energy wants along the free
     /// gradient instead of alpha_bar, where the projected iterate's energy
     /// is below the boundary point's (expand() in the source says why).
@@ -136,7 +149,12 @@ namespace unilateral::lcp
     Vector
     product(const Vector &d);
 
-    /// g from x, and p = phi.
+    /// The first conjugate direction in the face of x, from its free
+    /// gradient @p phi: phi, or M^-1 phi restricted to the free set.
+    Vector
+    face_direction(const Vector &x, const Vector &phi) const;
+
+    /// g from x, and p its face direction.
     void
     restart(const Vector &x);
 
@@ -158,12 +176,13 @@ namespace unilateral::lcp
     void
     moved(double alpha) const;
 
-    Operator     H;
-    Observer     observer;
-    Vector       r, lower;
-    double       alpha_bar, gamma;
-    bool         adaptive_expansion = false;
-    Vector       g, p;
-    unsigned int n_steps = 0, n_products = 0, n_adaptive_expansions = 0;
+    Operator       H;
+    Observer       observer;
+    Preconditioner preconditioner;
+    Vector         r, lower;
+    double         alpha_bar, gamma;
+    bool           adaptive_expansion = false;
+    Vector         g, p;
+    unsigned int   n_steps = 0, n_products = 0, n_adaptive_expansions = 0;
   };
 } // namespace unilateral::lcp
