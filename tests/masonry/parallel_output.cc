@@ -9,8 +9,9 @@
 // nodal displacement of a serial in-process run of the same wall (CHOLMOD
 // on each rank alone) to 1e-6 of the largest |u| (the VTU holds Float32),
 // and every node of the serial run must appear in some piece. A rank that
-// wrote its blocks from a wrong or stale copy of u would fail here. Rank 0
-// checks and prints.
+// wrote its blocks from a wrong or stale copy of u would fail here. Then a
+// run whose rank 1 cannot write its piece: exit code 1 on every rank, and
+// summary.json with the error. Rank 0 checks and prints.
 #include <unilateral/application.h>
 
 #include "../mpi_test_tools.h"
@@ -269,6 +270,31 @@ main(int argc, char **argv)
       wall + "subsection Solver\n  set Factorisation = cholmod\nend\n"),
     "serial_" + std::to_string(rank));
   MPI_Barrier(MPI_COMM_WORLD);
+
+  // Rank 1 cannot write its piece (a directory stands where it goes): the
+  // run fails on every rank alike, and rank 0 still writes summary.json
+  // with the error, naming rank 1 (a review: no summary.json was left, as
+  // rank 0 waited for the others in a collective call until rank 1 ended
+  // the run).
+  if (rank == 0)
+    {
+      std::ofstream("blocked.prm")
+        << "set Scene = masonry\n"
+           "subsection Output\n  set Directory = results\n"
+           "  set Run name = blocked\n  set Print timings = false\n"
+           "  set Write VTU = true\nend\n"
+        << wall;
+      std::filesystem::create_directories("results/blocked/"
+                                          "solution_000.1.vtu/occupied");
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  arguments                      = {"unilateral", "blocked.prm"};
+  char              *blocked_c[] = {arguments[0].data(), arguments[1].data()};
+  std::ostringstream blocked_out, blocked_err;
+  const int          blocked_code =
+    unilateral::run_application(2, blocked_c, blocked_out, blocked_err);
+  const int fewest = dealii::Utilities::MPI::min(blocked_code, MPI_COMM_WORLD);
+  const int most   = dealii::Utilities::MPI::max(blocked_code, MPI_COMM_WORLD);
   if (rank != 0)
     return 0;
 
@@ -327,5 +353,13 @@ main(int argc, char **argv)
             << yes_no(!distinct.empty() && *distinct.begin() == 0 &&
                       *distinct.rbegin() ==
                         static_cast<int>(distinct.size()) - 1)
+            << "\n";
+  const std::string blocked = read("results/blocked/summary.json");
+  std::cout << "a piece rank 1 cannot write: exit code 1 on every rank: "
+            << yes_no(fewest == 1 && most == 1)
+            << ", summary.json with status error naming rank 1: "
+            << yes_no(blocked.find("\"error\"") != std::string::npos &&
+                      blocked.find("on rank 1: cannot write") !=
+                        std::string::npos)
             << "\n";
 }

@@ -415,10 +415,12 @@ namespace unilateral::masonry
     const auto has_blocks = [n_blocks, n_ranks](const unsigned int r) {
       return n_blocks * (r + 1) / n_ranks > n_blocks * r / n_ranks;
     };
-    if (n_ranks == 1)
-      write(record_name, text);
-    else if (has_blocks(rank))
-      write(piece(rank), text);
+    ranks::collectively([&]() {
+      if (n_ranks == 1)
+        write(record_name, text);
+      else if (has_blocks(rank))
+        write(piece(rank), text);
+    });
     if (rank != 0)
       return;
     if (n_ranks > 1)
