@@ -173,16 +173,25 @@ main()
 
   // A 3D wall without the front rollers: the wall may slide along z, a
   // mechanism that the load does not drive. TFETI, which needs every rigid
-  // motion held, refuses it and says what to do.
+  // motion held, refuses it and says what to do; the scene's failure line
+  // says the wall is not held (it said the solver found no configuration
+  // and the wall might have no equilibrium).
   {
     const RunOf<3> result =
       run<3>(parse("subsection Masonry\n  set Dimension = 3\n  set Blocks "
                    "through the thickness = 2\n  set Thickness = 2\nend\n" +
                    prm_text("stack bond", 2, "tfeti")),
              "sliding");
+    const std::string line = result.scene->failure_description(result.report);
     std::cout << "3D stack bond free to slide along z: status "
               << to_string(result.report.status) << ": "
-              << result.report.message << "\n";
+              << result.report.message << "\n"
+              << "  the failure line names the free motion and claims no "
+                 "lack of equilibrium (a review): "
+              << yes_no(line.find("not held against every rigid motion") !=
+                          std::string::npos &&
+                        line.find("no equilibrium") == std::string::npos)
+              << "\n";
   }
 
   // Gravity upwards: no compressive forces hold the blocks down. The

@@ -859,6 +859,18 @@ namespace unilateral::masonry
              " has no equilibrium: its supports and joints cannot "
              "carry the loads" +
              unused + " (" + report.message + ")";
+    // A free motion the proof before solving did not take: the loads do
+    // no work along it worth a proof, so the structure is in equilibrium
+    // but its displacement along that motion is not fixed; the solver did
+    // not search for a configuration and fail (TFETI refuses any free
+    // motion at once, a review).
+    if (report.status == lcp::Status::singular && !free_motions.empty())
+      return "the solver met a singular system it could not resolve, and " +
+             structure + " is not held against every rigid motion" + unused +
+             "; the loads do no measurable work along such a motion, so " +
+             "they do not fix the displacement along it: hold it by a "
+             "support, or choose a method that resolves free motions (" +
+             report.message + ")";
     if (report.status == lcp::Status::singular)
       return "the solver found no configuration in which every block is "
              "held by a support or a closed joint: " +
