@@ -37,6 +37,14 @@
 //  9. one element: every node lies on the clamped edge, so the obstacle
 //     acts nowhere; the summary says so (a review: the plate went 23 mm
 //     through it without a word).
+// 10. elements 1000 times longer than wide (2000 x 2): TNNMG's steps fell
+//     by 0.6 per iteration at 1e-8 of |u| and it stopped there as at a
+//     rounding floor, 'converged' 6e-8 off PDAS (a review); now only steps
+//     that stop falling end it, and it hands over to PDAS: PDAS's centre
+//     deflection.
+// 11. an obstacle above the clamped edge (w = 0 there: no solution in the
+//     continuum, the answer grows as the mesh is refined; a review): the
+//     summary says so; at the edge's height or below it (psi3), not.
 #include "plate_runs.h"
 
 #include <cmath>
@@ -212,6 +220,46 @@ main()
               << ", the interior point's energy (1e-10): "
               << same_energy(tnnmg, ip) << "\n";
   }
+  {
+    const std::string plate =
+      "subsection Geometry\n  set Elements x = 2000\n"
+      "  set Elements y = 2\nend\n"
+      "subsection Obstacle\n  set Function = psi3\nend\n";
+    const Run    tnnmg = run_plate("slow_tnnmg", plate, "tnnmg");
+    const Run    pdas  = run_plate("slow_pdas", plate, "pdas");
+    const double w     = pdas.results().centre_deflection;
+    std::cout << "elements 1000 times longer than wide, tnnmg: "
+              << unilateral::lcp::to_string(tnnmg.report.status)
+              << ", handed over to pdas: "
+              << (tnnmg.report.message.find("handed over to PDAS") !=
+                      std::string::npos ?
+                    "yes" :
+                    "NO")
+              << ", pdas's centre deflection (1e-10): "
+              << (std::abs(tnnmg.results().centre_deflection - w) <=
+                      1e-10 * std::abs(w) ?
+                    "yes" :
+                    "NO")
+              << "\n";
+  }
+  for (const std::string height : {"1", "0", "psi3"})
+    {
+      const Run raised =
+        run_plate("edge_obstacle",
+                  "subsection Geometry\n  set Elements x = 20\n"
+                  "  set Elements y = 20\nend\n"
+                  "subsection Obstacle\n  set Function = " +
+                    height + "\nend\n",
+                  "tnnmg");
+      std::cout << "obstacle " << height << ": "
+                << unilateral::lcp::to_string(raised.report.status)
+                << ", says it rises above the clamped edge: "
+                << (raised.printed.find("rises above the clamped edge") !=
+                        std::string::npos ?
+                      "yes" :
+                      "no")
+                << "\n";
+    }
   {
     const std::string plate =
       "subsection Geometry\n  set Elements x = 25\n"

@@ -197,6 +197,10 @@ namespace unilateral::plate
     /// assemble_system): 1 within a factor 1e3 of the paper's steel plate.
     double                                       unit = 1;
     std::unique_ptr<dealii::Function<2, double>> obstacle; ///< null: none
+    /// The obstacle's largest value on the clamped edge, where w = 0, and
+    /// where it is taken (set up with the bounds).
+    double           obstacle_on_edge = 0;
+    dealii::Point<2> obstacle_on_edge_at;
     /// A coarser mesh that this plate builds for a start or a hierarchy:
     /// its nodes are not the user's (see setup_system).
     bool                                         coarse_level = false;
