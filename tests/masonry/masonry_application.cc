@@ -349,7 +349,7 @@ main()
                                       directory + "lcp_constraints.txt");
       const unilateral::lcp::Vector u =
         unilateral::lcp::read_vector(directory + "u.txt");
-      const double lcp_energy = 0.5 * u.dot(lcp.A * u) - lcp.b.dot(u);
+      const double lcp_energy = unilateral::lcp::energy(lcp, u);
       const double unit       = number(name, "lcp_force_unit");
       const double offset     = number(name, "lcp_energy_offset");
       const double scene      = number(name, "energy");
