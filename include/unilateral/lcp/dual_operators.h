@@ -135,12 +135,6 @@ namespace unilateral::lcp
       return n_products;
     }
 
-    unsigned int
-    lumped_products() const
-    {
-      return n_lumped;
-    }
-
     /// The coarse problem's size and factorisation, into @p report's
     /// figures and counters.
     void

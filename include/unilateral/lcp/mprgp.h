@@ -69,10 +69,10 @@ namespace unilateral::lcp
     }
 
     /// z = M^-1 phi for a preconditioner M of H (symmetric positive
-    /// definite); MPRGP uses it in the face (Dostal 2009, sec. 5.10): the
-    /// conjugate gradient steps on the free set F take z restricted to F,
-    /// the preconditioner of H_FF that the restriction of M^-1 is. The
-    /// expansion and proportioning steps stay unpreconditioned.
+    /// definite), used in the face (Dostal 2009, "preconditioning in
+    /// face"): the conjugate gradient steps on the free set F take z
+    /// restricted to F, the preconditioner of H_FF that the restriction of
+    /// M^-1 is. The expansion and proportioning steps stay unpreconditioned.
     using Preconditioner = std::function<void(const Vector &phi, Vector &z)>;
 
     void

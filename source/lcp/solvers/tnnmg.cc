@@ -152,9 +152,9 @@ namespace unilateral::lcp
     /**
      * A step on a settled held set that is above this fraction of the last
      * one has stopped falling: the rounding floor of A u, where the
-     * iteration ends. Below the floor a linear iteration whose steps fall
-     * by this factor is 1 / (1 - factor) = 10 steps from its limit, so the
-     * answer is known to ten times the last step (judge()).
+     * iteration ends. A linear iteration whose steps fall by this factor
+     * is still 1 / (1 - factor) = 10 times its last step from its limit,
+     * so the answer is known to ten times that step (judge()).
      */
     constexpr double rounding_floor_fall = 0.9;
 
