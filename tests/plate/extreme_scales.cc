@@ -42,9 +42,12 @@
 //     rounding floor, 'converged' 6e-8 off PDAS (a review); now only steps
 //     that stop falling end it, and it hands over to PDAS: PDAS's centre
 //     deflection.
-// 11. an obstacle above the clamped edge (w = 0 there: no solution in the
-//     continuum, the answer grows as the mesh is refined; a review): the
-//     summary says so; at the edge's height or below it (psi3), not.
+// 11. an obstacle above the clamped edge (w = 0 and dw/dn = 0 there: no
+//     solution in the continuum, the answer grows as the mesh is refined;
+//     a review): the summary says so, also for one that rises from 0 at
+//     the edge with a slope, or is above it only between two vertices;
+//     at the edge's height or below it (psi3), or above it on the edge
+//     line alone (the obstacle acts inside), not.
 #include "plate_runs.h"
 
 #include <cmath>
@@ -242,7 +245,12 @@ main()
                     "NO")
               << "\n";
   }
-  for (const std::string height : {"1", "0", "psi3"})
+  for (const std::string height : {"1",
+                                   "0",
+                                   "psi3",
+                                   "1e-7*x*(100-x)*y*(100-y)",
+                                   "1 - (x-2.5)^2",
+                                   "if(x < 1e-9, 1, -2)"})
     {
       const Run raised =
         run_plate("edge_obstacle",

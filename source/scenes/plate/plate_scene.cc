@@ -3,6 +3,7 @@
 #include <unilateral/scenes/plate/bending.h>
 #include <unilateral/scenes/plate/plate_scene.h>
 
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -174,17 +175,38 @@ namespace unilateral::plate
       }
     lcp_problem.lower_bound.conservativeResize(lcp_problem.constrained.size());
 
-    obstacle_on_edge = -std::numeric_limits<double>::infinity();
+    // Where the clamped edge holds w = 0 and dw/dn = 0, the plate can climb
+    // away from it no faster than the square of the distance d: an obstacle
+    // that is positive just inside the edge and grows there slower than
+    // d^2 (a constant, a slope from zero) cannot be met in the continuum.
+    // Sampled along each edge face (between its vertices, a review; not at
+    // its ends, which lie on the neighbouring edge) at d = delta and
+    // 2 delta inside: psi(delta) > 0 and psi(delta) > psi(2 delta) / 3 (a
+    // constant or a slope; d^2 gives exactly a quarter). The edge line
+    // itself does not count: the obstacle acts inside.
+    obstacle_on_edge = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary())
-          for (const unsigned int vertex : face->vertex_indices())
-            if (const double psi = obstacle->value(face->vertex(vertex));
-                psi > obstacle_on_edge)
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const auto                 face = cell->face(f);
+            const dealii::Point<2>     a = face->vertex(0), b = face->vertex(1);
+            const dealii::Tensor<1, 2> inward =
+              -dealii::GeometryInfo<2>::unit_normal_vector[f];
+            const double delta = 1e-3 * a.distance(b);
+            for (const double s : {0.1, 0.3, 0.5, 0.7, 0.9})
               {
-                obstacle_on_edge    = psi;
-                obstacle_on_edge_at = face->vertex(vertex);
+                const dealii::Point<2> on_edge = a + s * (b - a);
+                const double near = obstacle->value(on_edge + delta * inward);
+                const double further =
+                  obstacle->value(on_edge + 2 * delta * inward);
+                if (near > 0 && near > further / 3 && near > obstacle_on_edge)
+                  {
+                    obstacle_on_edge    = near;
+                    obstacle_on_edge_at = on_edge;
+                  }
               }
+          }
   }
 
   // The clamped DOFs are zero, so F needs no lifting.
@@ -319,12 +341,13 @@ namespace unilateral::plate
     // centre deflection 1.1, 15 and 37 mm on 20, 64 and 128 elements).
     if (obstacle != nullptr && obstacle_on_edge > 0)
       out << "  note: the obstacle rises above the clamped edge (psi = "
-          << obstacle_on_edge << " mm at (" << obstacle_on_edge_at[0] << ", "
-          << obstacle_on_edge_at[1]
-          << "), where w = 0): the plate must climb onto it within one "
-             "element of the edge, so the answer depends on the mesh and "
-             "grows without bound as it is refined; the plate lies above "
-             "psi, so an obstacle below it is negative at the edge\n";
+          << obstacle_on_edge << " mm just inside it at ("
+          << obstacle_on_edge_at[0] << ", " << obstacle_on_edge_at[1]
+          << "), where w = 0 and its slope is 0): the plate must climb onto "
+             "it within one element of the edge, so the answer depends on "
+             "the mesh and grows as it is refined; an obstacle under a "
+             "clamped plate is negative at the edge, or rises from 0 there "
+             "no faster than the square of the distance\n";
     print_solver_summary(out, lcp_problem, report);
     if (!coarse_levels.empty())
       {
