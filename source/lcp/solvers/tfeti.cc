@@ -333,8 +333,7 @@ namespace unilateral::lcp
           mprgp.use_adaptive_expansion(options.expansion == "adaptive");
           if (options.preconditioner == "lumped")
             mprgp.precondition([&](const Vector &phi, Vector &z) {
-              const Vector Q_phi =
-                dual.G().transpose() * dual.coarse_solve(dual.G() * phi);
+              const Vector Q_phi = dual.apply_Q(phi);
               z = dual.apply_P(dual.apply_lumped(phi - Q_phi)) + Q_phi / rho;
             });
           // G m and (G G^T)^-1 G m follow m from the products' own.
