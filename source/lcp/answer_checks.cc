@@ -168,22 +168,33 @@ namespace unilateral::lcp
     if (!report.converged() || solution.u.size() != problem.size())
       return;
     const Vector lambda = problem.A * solution.u - problem.b;
-    double       work   = problem.b.dot(solution.u);
-    double       scale  = problem.b.cwiseAbs().dot(solution.u.cwiseAbs());
+    // Summed in long double: b and u are each within double's range where
+    // b_i u_i is not (a plate of E = 1e-250, whose scaled loads are 1e254
+    // and its deflections 1e255, failed this check with W = NaN).
+    long double work = 0, scale = 0;
+    for (Index i = 0; i < problem.size(); ++i)
+      {
+        const long double product =
+          static_cast<long double>(problem.b[i]) * solution.u[i];
+        work += product;
+        scale += std::abs(product);
+      }
     // Each lambda_i carries the rounding error of A u, epsilon (|A| |u|)_i,
     // into lambda_i l_i: W cannot be known more finely than their sum
     // (without loads lambda is nothing but that error).
-    double rounding = 0;
+    long double rounding = 0;
     for (Index k = 0; k < problem.n_constrained(); ++k)
       {
-        const Index  i       = problem.constrained[k];
-        const double product = lambda[i] * problem.lower_bound[k];
+        const Index       i = problem.constrained[k];
+        const long double product =
+          static_cast<long double>(lambda[i]) * problem.lower_bound[k];
         work += product;
         scale += std::abs(product);
         double abs_product = 0;
         for (SparseMatrix::InnerIterator it(problem.A, i); it; ++it)
           abs_product += std::abs(it.value() * solution.u[it.row()]);
-        rounding += abs_product * std::abs(problem.lower_bound[k]);
+        rounding += static_cast<long double>(abs_product) *
+                    std::abs(problem.lower_bound[k]);
       }
     rounding *= 10 * std::numeric_limits<double>::epsilon();
     if (work >= -1e-6 * scale - rounding)

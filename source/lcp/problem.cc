@@ -29,6 +29,7 @@ namespace unilateral::lcp
     mostly_active      = other.mostly_active;
     known_semidefinite = other.known_semidefinite;
     definite           = other.definite;
+    energy_unit        = other.energy_unit;
     tearing            = std::move(other.tearing);
     hierarchy          = std::move(other.hierarchy);
     return *this;
@@ -342,7 +343,8 @@ namespace unilateral::lcp
         twice_strain += column * u[j];
         work += static_cast<long double>(problem.b[j]) * u[j];
       }
-    return static_cast<double>(0.5L * twice_strain - work);
+    return static_cast<double>(static_cast<long double>(problem.energy_unit) *
+                               (0.5L * twice_strain - work));
   }
 
   Vector

@@ -11,7 +11,13 @@
 //    that says it cannot resolve it (before: E = 1e300 and density
 //    1e-200 were 'converged' with the blocks hanging in the air, E = 1e-300
 //    'converged' with energy NaN);
-//  - E alone very small: displacements beyond double precision, refused.
+//  - E alone very small: the elastic deformation dwarfs the gap, so the
+//    energy of E = 4e3 with no gap times 4e3 / E (before: refused, the
+//    work check's b^T u, 1e-300 / 1e-300 in the solvers' units times
+//    1e300, beyond double's range);
+//  - E = 1e300 with no gap (nothing settles): the energy of E = 4e3 times
+//    4e3 / E (it was reported 0: the energy in the solvers' force unit,
+//    1e-598, underflowed before it was multiplied back).
 #include "masonry_test_tools.h"
 
 #include <cmath>
@@ -22,14 +28,17 @@ using namespace masonry_test;
 namespace
 {
   Run
-  wall(const double youngs_modulus, const double density)
+  wall(const double youngs_modulus,
+       const double density,
+       const double relative_gap = 0.5)
   {
     std::ostringstream prm;
     prm << std::setprecision(17)
         << "subsection Masonry\n  set Blocks per side = 4\n"
         << "  subsection Materials\n    set Young's modulus = "
         << youngs_modulus << "\n    set Density = " << density
-        << "\n  end\nend\n";
+        << "\n  end\n  subsection Boundary conditions\n"
+        << "    set Relative gap = " << relative_gap << "\n  end\nend\n";
     return run(parse(prm.str()), "units");
   }
 
@@ -110,15 +119,27 @@ main()
                 << yes_no(!result.report.converged() || right) << "\n";
     }
 
+  const Run no_gap = wall(4e3, 1, 0);
   for (const double E : {1e-300, 1e-200})
     {
       const Run result = wall(E, 1);
       std::cout << "E = " << E
                 << ", density 1: " << lcp::to_string(result.report.status)
-                << ", converged only with finite figures: "
+                << ", converged only with the energy of E = 4e3 and no gap "
+                   "times 4e3 / E: "
                 << yes_no(!result.report.converged() ||
-                          (std::isfinite(result.report.energy) &&
-                           std::isfinite(largest(result))))
+                          relative(result.report.energy,
+                                   4e3 / E * no_gap.report.energy) < 1e-10)
                 << "\n";
     }
+
+  {
+    const Run stiff = wall(1e300, 1, 0);
+    std::cout << "E = 1e300, no gap: " << lcp::to_string(stiff.report.status)
+              << ", the energy of E = 4e3 times 4e3 / E: "
+              << yes_no(stiff.report.converged() &&
+                        relative(stiff.report.energy,
+                                 4e3 / 1e300 * no_gap.report.energy) < 1e-10)
+              << "\n";
+  }
 }

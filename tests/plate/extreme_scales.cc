@@ -49,10 +49,16 @@
 //     the edge with a slope, or is above it only between two vertices;
 //     at the edge's height or below it (psi3), or above it on the edge
 //     line alone (the obstacle acts inside), not.
+// 12. Young's modulus 1e300 and 1e-250 with no obstacle: the energy of
+//     E = 1e20 times 1e20 / E. The energy reported was 0 at 1e300 (the
+//     scaled energy, 1e-590, underflowed before the scene multiplied it
+//     back), and the run at 1e-250 failed its work check with W = NaN (b_i
+//     u_i beyond double's range).
 #include "plate_runs.h"
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <utility>
 
 using namespace plate_runs;
@@ -289,6 +295,36 @@ main()
                       "NO")
                 << "\n";
     }
+  {
+    const auto modulus = [](const std::string &youngs_modulus) {
+      return run_plate("modulus_" + youngs_modulus,
+                       "subsection Geometry\n  set Elements x = 12\n"
+                       "  set Elements y = 8\nend\n"
+                       "subsection Material\n  set Name = custom\n"
+                       "  set Young's modulus = " +
+                         youngs_modulus +
+                         "\n  set Poisson's ratio = 0.3\nend\n"
+                         "subsection Obstacle\n  set Function = none\nend\n",
+                       "pdas");
+    };
+    const Run ordinary = modulus("1e20");
+    for (const std::string youngs_modulus : {"1e300", "1e-250"})
+      {
+        const Run    extreme = modulus(youngs_modulus);
+        const double ratio   = 1e20 / std::stod(youngs_modulus);
+        std::cout << "Young's modulus " << youngs_modulus << ": "
+                  << unilateral::lcp::to_string(extreme.report.status)
+                  << ", the energy of E = 1e20 times 1e20 / E (1e-10): "
+                  << (extreme.report.converged() &&
+                          ordinary.report.converged() &&
+                          std::abs(extreme.report.energy -
+                                   ratio * ordinary.report.energy) <=
+                            1e-10 * std::abs(ratio * ordinary.report.energy) ?
+                        "yes" :
+                        "NO")
+                  << "\n";
+      }
+  }
   {
     const Run stopped =
       run_plate("stopped_short",

@@ -93,6 +93,12 @@ namespace unilateral::lcp
     /// The problem on a sequence of coarser meshes (hierarchy.h), for the
     /// multigrid methods; null if the builder made none.
     std::shared_ptr<const Hierarchy> hierarchy;
+    /// The builder's unit of energy: where it divided A and b by a unit of
+    /// force (so that the solvers see the same numbers in any units),
+    /// energy() reports the objective times it, multiplied before the sum
+    /// is rounded to double. Multiplied afterwards, the scaled energy of a
+    /// plate of E = 1e300 (about 1e-590) had already underflowed to 0.
+    double energy_unit = 1;
     /// @}
 
     Index
@@ -155,7 +161,8 @@ namespace unilateral::lcp
   double
   diagonal_scale(const SparseMatrix &A);
 
-  /// The objective 1/2 u^T A u - b^T u.
+  /// The objective 1/2 u^T A u - b^T u, in the builder's units
+  /// (Problem::energy_unit).
   double
   energy(const Problem &problem, const Vector &u);
 

@@ -340,6 +340,7 @@ namespace unilateral::masonry
       {
         lcp_problem.A /= unit;
         lcp_problem.b /= unit;
+        lcp_problem.energy_unit = unit;
       }
     else
       unit = 1;
@@ -394,7 +395,7 @@ namespace unilateral::masonry
   void
   MasonryScene<dim>::postprocess(const RunContext &context, lcp::Report &report)
   {
-    report.energy = report.energy * unit + energy_offset;
+    report.energy += energy_offset;
     report.regularisation *= unit;
     const lcp::Solution &solution = lcp_solution;
     state->displacement = state->change->to_physical(solution.u.data());

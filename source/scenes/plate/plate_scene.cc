@@ -239,6 +239,7 @@ namespace unilateral::plate
       {
         lcp_problem.A /= unit;
         lcp_problem.b /= unit;
+        lcp_problem.energy_unit = unit;
       }
     // The bending stiffness with the clamped DOFs eliminated.
     lcp_problem.known_semidefinite = true;
@@ -259,7 +260,6 @@ namespace unilateral::plate
   void
   PlateScene::postprocess(const RunContext &, lcp::Report &report)
   {
-    report.energy *= unit;
     report.regularisation *= unit;
     dof_values.reinit(dof_handler.n_dofs());
     for (lcp::Index k = 0; k < free_dofs.size(); ++k)
