@@ -2,6 +2,7 @@
 #include <unilateral/base/blas_threads.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
+#include <unilateral/base/parameter_file_errors.h>
 #include <unilateral/base/prefixed_lines.h>
 #include <unilateral/base/ranks.h>
 #include <unilateral/base/version.h>
@@ -37,7 +38,7 @@ namespace unilateral
       "                                     documentation and default\n"
       "  unilateral --version               the git commit built and the\n"
       "                                     deal.II it runs on\n"
-      "  unilateral --help                  this text\n"
+      "  unilateral --help (or -h)          this text\n"
       "\n"
       "A run writes into <Output/Directory>/<Output/Run name>/ (by default\n"
       "output/<name of FILE>/ in the working directory; relative paths in\n"
@@ -135,10 +136,11 @@ namespace unilateral
                           "'..'); empty takes the parameter file's name "
                           "without extension. A run first removes from it "
                           "the files an earlier run wrote there "
-                          "(summary.json, parameters.prm, *.vtu, *.pvtu, "
-                          "*.pvd, u.txt, lambda.txt, active_set.txt, "
+                          "(summary.json, parameters.prm, the scenes' "
+                          "solution*, plate.* and nodes.* VTU, PVTU and PVD "
+                          "files, u.txt, lambda.txt, active_set.txt, "
                           "lcp_A.mtx, lcp_b.txt, lcp_constraints.txt) and "
-                          "nothing else.");
+                          "nothing else: other VTU files there stay.");
         prm.declare_entry("Write VTU",
                           "true",
                           dealii::Patterns::Bool(),
@@ -452,15 +454,25 @@ namespace unilateral
         start == byte_order_mark;
       const std::string extension =
         std::filesystem::path(parameter_file).extension().string();
-      if (!marked || extension == ".json" || extension == ".xml")
+      try
         {
-          prm.parse_input(parameter_file);
-          return;
+          if (!marked || extension == ".json" || extension == ".xml")
+            {
+              prm.parse_input(parameter_file);
+              return;
+            }
+          std::ostringstream rest;
+          rest << in.rdbuf();
+          std::istringstream text(rest.str());
+          prm.parse_input(text, parameter_file);
         }
-      std::ostringstream rest;
-      rest << in.rdbuf();
-      std::istringstream text(rest.str());
-      prm.parse_input(text, parameter_file);
+      catch (const dealii::ExceptionBase &error)
+        {
+          const std::string message = explain_parse_error(error, prm);
+          if (message.empty())
+            throw;
+          throw InputError(message);
+        }
     }
 
     int
@@ -516,9 +528,35 @@ namespace unilateral
       context.print_timings  = prm.get_bool("Print timings");
       const bool progress    = prm.get_bool("Progress");
       prm.leave_subsection();
-      context.solver.parse_parameters(prm);
+      context.output_directory =
+        std::filesystem::path(
+          directory.empty() ? "output" :
+                              resolve_relative_to(parameter_file, directory)) /
+        context.run_name;
+      // Rank 0 writes for all ranks, which compute the same answer; a scene
+      // that writes its VTU in pieces has every rank write its own.
+      context.writes_files = ranks::this_rank() == 0;
 
-      std::unique_ptr<Scene> scene = scene_info.create(prm);
+      std::unique_ptr<Scene> scene;
+      try
+        {
+          context.solver.parse_parameters(prm);
+          scene = scene_info.create(prm);
+        }
+      catch (const std::exception &error)
+        {
+          // Bad input found before the run's folder is prepared leaves the
+          // folder as it was, but not with an earlier run's summary saying
+          // 'converged' as if it were this run's (a script reading it after
+          // the failed run took the old success).
+          if (context.writes_files &&
+              std::filesystem::exists(context.output_directory /
+                                      "summary.json"))
+            write_error_summary(context,
+                                scene_info.name,
+                                one_line_message(error));
+          throw;
+        }
       if (before_large_run && scene->large(parameter_file))
         before_large_run();
       if (std::isfinite(memory::address_space_limit()) &&
@@ -539,14 +577,6 @@ namespace unilateral
           throw InputError(refusal);
         }
 
-      context.output_directory =
-        std::filesystem::path(
-          directory.empty() ? "output" :
-                              resolve_relative_to(parameter_file, directory)) /
-        context.run_name;
-      // Rank 0 writes for all ranks, which compute the same answer; a scene
-      // that writes its VTU in pieces has every rank write its own.
-      context.writes_files = ranks::this_rank() == 0;
       prepare_output_directory_on_rank_0(context.output_directory,
                                          directory,
                                          parameter_file);

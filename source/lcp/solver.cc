@@ -249,7 +249,8 @@ namespace unilateral::lcp
       Double(0),
       "A method that reports convergence while the relative KKT residuals "
       "of its answer exceed this gets status 'inaccurate': no wrong answer "
-      "is printed as converged.");
+      "is printed as converged. 0 < tolerance < 1 (a relative residual of 1 "
+      "checks nothing).");
     prm.declare_entry(
       "Factorisation",
       "auto",
@@ -320,12 +321,14 @@ namespace unilateral::lcp
     factorisation  = prm.get("Factorisation");
     if (factorisation == "mumps")
       DistributedCholesky::require_available();
-    check_parameter(kkt_tolerance > 0,
+    check_parameter(kkt_tolerance > 0 && kkt_tolerance < 1,
                     "Solver",
                     "KKT tolerance",
                     kkt_tolerance,
-                    "must be > 0: a floating-point answer is never exact to "
-                    "the last bit (1e-8, the default, or 1e-10 are usual)");
+                    "must be > 0 and < 1: a floating-point answer is never "
+                    "exact to the last bit, and a residual as large as the "
+                    "forces checks nothing (1e-8, the default, or 1e-10 are "
+                    "usual)");
     prm.leave_subsection();
     // The methods' own entries were parsed into their options by the
     // bindings of declare_parameters(); what patterns cannot check:

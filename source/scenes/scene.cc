@@ -119,10 +119,12 @@ namespace unilateral
           .set("rank", static_cast<unsigned int>(r))
           .set("peak_memory_gb", peaks[r] / 1e9);
       summary.set("ranks", ranks);
-      if (context.progress != nullptr && peaks.size() > 1)
+      if (context.progress != nullptr)
         for (std::size_t r = 0; r < peaks.size(); ++r)
-          *context.progress << "  rank " << r << ": peak memory "
-                            << memory::format(peaks[r]) << std::endl;
+          *context.progress
+            << "  "
+            << (peaks.size() > 1 ? "rank " + std::to_string(r) + ": " : "")
+            << "peak memory " << memory::format(peaks[r]) << std::endl;
       if (!report.figures.empty())
         {
           JsonObject &method = summary.object("method");

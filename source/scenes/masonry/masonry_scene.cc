@@ -701,10 +701,14 @@ namespace unilateral::masonry
         << "  supports: " << quantity(s.n_dirichlet, "Dirichlet DOF") << ", "
         << quantity(s.n_signorini, "Signorini node") << " with gap ";
     const std::string gap = dealii::Utilities::trim(parameters.boundary.gap);
+    // g only where the expression uses it (a mesh file's gap need not).
+    static const std::regex uses_g(R"((^|[^A-Za-z0-9_])g([^A-Za-z0-9_]|$))");
     if (gap == "g")
       out << "g = " << s.gap;
-    else
+    else if (std::regex_search(gap, uses_g))
       out << gap << " (g = " << s.gap << ")";
+    else
+      out << gap;
     out << "; joints: " << s.n_horizontal_joint << " horizontal + "
         << quantity(s.n_vertical_joint, "vertical node pair");
     if (s.n_inclined_joint > 0)

@@ -129,7 +129,10 @@ namespace unilateral::masonry
   wall_boundary_names(const dealii::Triangulation<dim, dim> &triangulation)
   {
     BoundaryNames names;
-    names.source     = "the built-in wall";
+    names.source = "the built-in wall";
+    names.fix =
+      "check its spelling (by number: left 1, right 2, base 3, top 4; in 3D "
+      "front 5, back 6, collar 7)";
     names.id_of_name = {{"left", wall_boundary::left},
                         {"right", wall_boundary::right},
                         {"base", wall_boundary::base},

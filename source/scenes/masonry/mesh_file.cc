@@ -1169,6 +1169,8 @@ namespace unilateral::masonry
 
     BoundaryNames &names = result.boundaries;
     names.source         = std::filesystem::path(file_name).filename().string();
+    names.fix = "the defaults name the built-in walls' boundaries: set this "
+                "parameter for your mesh";
     for (const auto &[name, tag] : scan.boundary_tag_names)
       names.id_of_name[name] = static_cast<dealii::types::boundary_id>(tag);
     for (const auto id : triangulation.get_boundary_ids())

@@ -120,13 +120,15 @@ namespace unilateral::masonry
     prm.declare_entry("Blocks per side",
                       "20",
                       Integer(),
-                      "m >= 1: the block height of the built-in walls is "
+                      "1 <= m <= 100000: the block height of the built-in "
+                      "walls is "
                       "H = 1/m (Table 1 of the paper uses m = 5, 10, ..., "
                       "225).");
     prm.declare_entry("Refinement",
                       "0",
                       Integer(),
-                      "r >= 0: cells of size h = H / 2^r for the built-in "
+                      "0 <= r <= 12: cells of size h = H / 2^r for the "
+                      "built-in "
                       "walls (the paper uses r = 0, h = H; r >= 1 for "
                       "convergence studies); a mesh file's cells are refined "
                       "r times.");
@@ -145,7 +147,7 @@ namespace unilateral::masonry
                       Integer(),
                       "3D built-in walls: each block of the 2D wall becomes "
                       "this many blocks behind each other in z (collar "
-                      "joints between them).");
+                      "joints between them); 1 to 1000.");
     prm.declare_entry("Thickness",
                       "1",
                       Double(),
@@ -189,6 +191,14 @@ namespace unilateral::masonry
                     "Mesh file",
                     "''",
                     "'Geometry = mesh file' needs a mesh file (.msh)");
+    // A setting the run would not read is refused rather than ignored (as
+    // the plate refuses material values beside a named material).
+    check_parameter(from_mesh_file || mesh_file.empty(),
+                    geometry_section,
+                    "Mesh file",
+                    mesh_file,
+                    "is read only with 'Geometry = mesh file' (now '" +
+                      geometry + "'): set that, or remove the line");
 
     const long blocks = prm.get_integer("Blocks per side");
     check_parameter(blocks >= 1 && blocks <= 100000,
@@ -319,7 +329,8 @@ namespace unilateral::masonry
                       dealii::Patterns::Anything(),
                       "u on the 'Prescribed displacement boundaries': dim "
                       "components separated by ';', functions of x, y, z with "
-                      "the constants g, H, s, pi ('0.01; 0').");
+                      "the constants g, H, s, pi ('0.01; 0'; a single 0 is "
+                      "zero in every direction).");
     prm.declare_entry("Traction boundaries",
                       "top",
                       dealii::Patterns::Anything(),
@@ -337,8 +348,9 @@ namespace unilateral::masonry
                       "Force per length (2D) or area (3D) on the 'Traction "
                       "boundaries': dim components separated by ';', "
                       "functions of x, y, z with the constants g, H, s, pi. "
-                      "'0; 0' is the paper's traction-free top; '0; -1' a "
-                      "downward load.");
+                      "'0; 0' is the paper's traction-free top (a single 0 "
+                      "is zero in every direction); '0; -1' a downward "
+                      "load.");
     prm.declare_entry("Gravity",
                       "1",
                       Double(),
@@ -526,6 +538,13 @@ namespace unilateral::masonry
     if (tags.empty())
       for (std::size_t k = 0; k < classes.size(); ++k)
         tags.push_back(std::to_string(k + 1));
+    check_parameter(assignment == MaterialAssignment::physical_tag ||
+                      tag_text.empty(),
+                    materials_section,
+                    "Tags",
+                    tag_text,
+                    "is read only with 'Assignment = physical tag' (now '" +
+                      rule + "'): set that, or remove the line");
     check_parameter(assignment != MaterialAssignment::physical_tag ||
                       tags.size() == classes.size(),
                     materials_section,

@@ -142,9 +142,8 @@ namespace unilateral::masonry
                           selection.boundary,
                           "is not a boundary of " + names.source +
                             " (its named boundaries: " +
-                            (known.tellp() > 0 ? known.str() : "none") +
-                            "); the defaults name the built-in walls' "
-                            "boundaries: set this parameter for your mesh");
+                            (known.tellp() > 0 ? known.str() : "none") + "); " +
+                            names.fix);
         }
       return id;
     }

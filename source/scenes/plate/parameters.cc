@@ -129,14 +129,15 @@ namespace unilateral::plate
       "2",
       dealii::Patterns::Double(),
       "t (mm); > 0. Enters through D = E t^3 / (12 (1 - nu^2)).");
-    prm.declare_entry("Elements x",
-                      "20",
-                      dealii::Patterns::Integer(),
-                      "n1: number of Bogner-Fox-Schmit rectangles in x; >= 1.");
+    prm.declare_entry(
+      "Elements x",
+      "20",
+      dealii::Patterns::Integer(),
+      "n1: number of Bogner-Fox-Schmit rectangles in x; 1 to 100000.");
     prm.declare_entry("Elements y",
                       "20",
                       dealii::Patterns::Integer(),
-                      "n2: number of rectangles in y; >= 1.");
+                      "n2: number of rectangles in y; 1 to 100000.");
     prm.declare_entry(
       "Boundary condition",
       "clamped",

@@ -23,6 +23,9 @@ namespace unilateral::masonry
     std::set<dealii::types::boundary_id>              ids_on_boundary;
     /// What the boundaries belong to, for messages ("arch.msh").
     std::string source;
+    /// What a support on a boundary of none of these names should do
+    /// instead, for messages.
+    std::string fix;
     /// Names that may be absent from the mesh without an error (the
     /// built-in walls' collar, which a wall one block thick has not).
     std::set<std::string> optional;
