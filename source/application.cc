@@ -137,7 +137,8 @@ namespace unilateral
                           "without extension. A run first removes from it "
                           "the files an earlier run wrote there "
                           "(summary.json, parameters.prm, the scenes' "
-                          "solution*, plate.* and nodes.* VTU, PVTU and PVD "
+                          "solution.pvd, solution_NNN.vtu and .pvtu with "
+                          "their pieces, plate.* and nodes.* VTU and PVD "
                           "files, u.txt, lambda.txt, active_set.txt, "
                           "lcp_A.mtx, lcp_b.txt, lcp_constraints.txt) and "
                           "nothing else: other VTU files there stay.");
@@ -468,7 +469,8 @@ namespace unilateral
         }
       catch (const dealii::ExceptionBase &error)
         {
-          const std::string message = explain_parse_error(error, prm);
+          const std::string message =
+            explain_parse_error(error, prm, parameter_file);
           if (message.empty())
             throw;
           throw InputError(message);

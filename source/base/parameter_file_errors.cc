@@ -1,4 +1,5 @@
 #include <unilateral/base/parameter_file_errors.h>
+#include <unilateral/base/text.h>
 
 #include <algorithm>
 #include <climits>
@@ -15,10 +16,10 @@ namespace unilateral
     std::string
     trimmed(const std::string &text)
     {
-      const auto first = text.find_first_not_of(" \t\r");
+      const auto first = text.find_first_not_of(" \t\r\n");
       if (first == std::string::npos)
         return "";
-      return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+      return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
     }
 
     std::string
@@ -30,92 +31,113 @@ namespace unilateral
       return result;
     }
 
-    /// A parameter file's lines as the parser sees them: comments cut,
-    /// and the subsection each line lies in.
+    /// What deal.II's parser sees in a parameter file (after
+    /// ParameterHandler::parse_input and scan_line, whose rules this
+    /// repeats: lines ending in '\' joined to the next, then comments cut,
+    /// tabs made spaces; keywords in lower or upper case; included files
+    /// read in place): the subsection each line lies in, and what each
+    /// subsection declares.
     struct Walk
     {
-      /// The subsection path at each line (1-based; [0] unused), and at
-      /// the end of the file.
-      std::vector<std::string> path_at_line;
-      std::string              path_at_end;
-      /// Each line without its comment and outer blanks.
-      std::vector<std::string> lines;
-      /// Per subsection path: the entries and the subsections declared in
-      /// it.
+      /// Per file (as the parser names it: an included one by its include
+      /// line), the subsection path at each line (1-based, [0] unused).
+      std::map<std::string, std::vector<std::string>> path_at_line;
+      /// Per file, each logical line (comments cut), by the number of its
+      /// first physical line, as the parser reports it.
+      std::map<std::string, std::map<std::size_t, std::string>> lines;
+      /// The path at the end of the file walked.
+      std::string path_at_end;
+      /// Per subsection path: the entries and the subsections in it.
       std::map<std::string, std::vector<std::string>> entries, subsections;
     };
 
-    Walk
-    walk(std::istream &in)
+    bool
+    starts_with(const std::string &line, const std::string &keyword)
     {
-      Walk                     result;
-      std::vector<std::string> path;
-      std::string              line;
-      result.path_at_line.emplace_back();
-      result.lines.emplace_back();
+      std::string upper = keyword;
+      for (char &c : upper)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      return line.rfind(keyword, 0) == 0 || line.rfind(upper, 0) == 0;
+    }
+
+    void
+    walk(std::istream             &in,
+         const std::string        &file,
+         std::vector<std::string> &path,
+         Walk                     &result,
+         const unsigned int        depth = 0)
+    {
+      std::vector<std::string> &at_line = result.path_at_line[file];
+      at_line.assign(1, "");
+      std::string logical, line;
+      std::size_t first_line = 0;
       while (std::getline(in, line))
         {
-          result.path_at_line.push_back(joined(path));
-          if (result.path_at_line.size() == 2 &&
-              line.rfind("\xEF\xBB\xBF", 0) == 0) // a byte-order mark
-            line.erase(0, 3);
-          line = trimmed(line.substr(0, line.find('#')));
-          result.lines.push_back(line);
-          if (line.rfind("subsection ", 0) == 0)
+          if (at_line.size() == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+            line.erase(0, 3); // a byte-order mark, which the program skips
+          at_line.push_back(joined(path));
+          line = trimmed(line);
+          if (!line.empty() && line.back() == '\\')
+            {
+              if (logical.empty())
+                first_line = at_line.size() - 1;
+              logical += line.substr(0, line.size() - 1);
+              continue;
+            }
+          if (logical.empty())
+            first_line = at_line.size() - 1;
+          logical += line;
+          line = logical.substr(0, logical.find('#'));
+          logical.clear();
+          std::replace(line.begin(), line.end(), '\t', ' ');
+          line                           = trimmed(line);
+          result.lines[file][first_line] = line;
+          // The lines joined into this one lie where it begins.
+          for (std::size_t n = at_line.size() - 1;
+               n > 0 && at_line[n] != joined(path);
+               --n)
+            at_line[n] = joined(path);
+          if (starts_with(line, "subsection "))
             {
               const std::string name = trimmed(line.substr(11));
               result.subsections[joined(path)].push_back(name);
               path.push_back(name);
             }
-          else if (line == "end" && !path.empty())
-            path.pop_back();
-          else if (line.rfind("set ", 0) == 0)
+          else if (starts_with(line, "end"))
+            {
+              if (!path.empty())
+                path.pop_back();
+            }
+          else if (starts_with(line, "set "))
             result.entries[joined(path)].push_back(
               trimmed(line.substr(4, line.find('=') - 4)));
-        }
-      result.path_at_end = joined(path);
-      return result;
-    }
-
-    /// The edit distance of @p a and @p b, ignoring case.
-    std::size_t
-    distance(const std::string &a, const std::string &b)
-    {
-      std::vector<std::size_t> row(b.size() + 1);
-      for (std::size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-      for (std::size_t i = 1; i <= a.size(); ++i)
-        {
-          std::size_t diagonal = row[0];
-          row[0]               = i;
-          for (std::size_t j = 1; j <= b.size(); ++j)
+          else if (starts_with(line, "include") && depth < 16)
             {
-              const std::size_t above = row[j];
-              const bool        same =
-                std::tolower(static_cast<unsigned char>(a[i - 1])) ==
-                std::tolower(static_cast<unsigned char>(b[j - 1]));
-              row[j] = std::min(
-                {row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
-              diagonal = above;
+              // Opened as the parser opens it: by the name as written.
+              const std::string name = trimmed(line.substr(7));
+              std::ifstream     included(name);
+              if (included)
+                walk(included, name, path, result, depth + 1);
             }
         }
-      return row[b.size()];
+      result.path_at_end = joined(path);
     }
 
-    /// ": did you mean 'X'?" for the nearest of @p names to @p name, if
-    /// it is near (a typing slip); else nothing.
+    /// ": did you mean 'X'?" for a near name of @p names, else nothing.
     std::string
     nearest(const std::string &name, const std::vector<std::string> &names)
     {
-      const std::string *best   = nullptr;
-      std::size_t best_distance = std::max<std::size_t>(2, name.size() / 3) + 1;
-      for (const std::string &candidate : names)
-        if (const std::size_t d = distance(name, candidate); d < best_distance)
-          {
-            best          = &candidate;
-            best_distance = d;
-          }
-      return best == nullptr ? "" : ": did you mean '" + *best + "'?";
+      const std::string best          = nearest_name(name, names);
+      const auto        single_spaced = [](const std::string &text) {
+        std::istringstream words(text);
+        std::string        result, word;
+        while (words >> word)
+          result += (result.empty() ? "" : " ") + word;
+        return result;
+      };
+      if (!best.empty() && single_spaced(name) == best)
+        return ": the words of '" + best + "' take single spaces";
+      return best.empty() ? "" : ": did you mean '" + best + "'?";
     }
 
     /// A pattern's description in words ("[Integer range 1...2147483647
@@ -147,6 +169,11 @@ namespace unilateral
         }
       if (pattern == "[Bool]")
         return "true or false";
+      static const std::regex list(
+        R"(\[List of <(.*)> of length (\d+)\.\.\.(\d+) \(inclusive\)\])");
+      if (std::regex_match(pattern, match, list))
+        return "a list of " + match[2].str() + " to " + match[3].str() +
+               " entries separated by ',', each " + in_words(match[1].str());
       if (std::regex_match(pattern, match, selection))
         {
           std::string        result;
@@ -159,6 +186,13 @@ namespace unilateral
       return "of the form " + pattern;
     }
 
+    /// @p text, or its start if it is too long to repeat in one line.
+    std::string
+    shortened(const std::string &text)
+    {
+      return text.size() > 80 ? text.substr(0, 60) + "..." : text;
+    }
+
     /// "'A/B'" or "the top level".
     std::string
     where(const std::string &path)
@@ -169,96 +203,138 @@ namespace unilateral
 
   std::string
   explain_parse_error(const dealii::ExceptionBase    &error,
-                      const dealii::ParameterHandler &prm)
+                      const dealii::ParameterHandler &prm,
+                      const std::string              &parameter_file)
   {
     using Handler = dealii::ParameterHandler;
     const bool invalid_value =
       dynamic_cast<const Handler::ExcInvalidEntryForPattern *>(&error);
     const bool no_subsection =
       dynamic_cast<const Handler::ExcNoSubsection *>(&error);
+    const bool unbalanced =
+      dynamic_cast<const Handler::ExcUnbalancedSubsections *>(&error);
+    const bool no_include =
+      dynamic_cast<const Handler::ExcCannotOpenIncludeStatementFile *>(&error);
+    if (!invalid_value && !no_subsection && !unbalanced && !no_include &&
+        !dynamic_cast<const Handler::ExcCannotParseLine *>(&error))
+      return "";
     std::ostringstream info;
     error.print_info(info);
     const std::string text = info.str();
-    std::smatch       match;
 
-    if (dynamic_cast<const Handler::ExcUnbalancedSubsections *>(&error))
-      {
-        static const std::regex named(R"(parameter file <([^\n]*)>)");
-        if (!std::regex_search(text, match, named))
-          return "";
-        std::ifstream     file_stream(match[1].str());
-        const std::string open = walk(file_stream).path_at_end;
-        return "parameter file '" + match[1].str() + "': " +
-               (open.empty() ? "an 'end' without its 'subsection': remove it" :
-                               "it ends inside subsection '" + open +
-                                 "': close each 'subsection' with an 'end' "
-                                 "line");
-      }
-    if (!invalid_value && !no_subsection &&
-        !dynamic_cast<const Handler::ExcCannotParseLine *>(&error))
-      return "";
+    Walk in_file;
+    {
+      std::ifstream            stream(parameter_file);
+      std::vector<std::string> path;
+      walk(stream, parameter_file, path, in_file);
+    }
+    if (unbalanced)
+      return "parameter file '" + parameter_file + "': " +
+             (in_file.path_at_end.empty() ?
+                "its 'subsection' and 'end' lines do not pair up" :
+                "it ends inside subsection '" + in_file.path_at_end + "'") +
+             ": close each 'subsection' with an 'end' line";
 
-    // "Line <12> of file <bad.prm>: ..." (ExcNoSubsection has no '>'
-    // after the file name).
-    const std::regex located(R"(Line <(\d+)> of file <([^\n]*?)>?:\s)");
-    if (!std::regex_search(text, match, located))
+    // "Line <12> of file <bad.prm>: ...", read by hand (a regular
+    // expression recursed until the stack overflowed on a name of 50,000
+    // characters); ExcNoSubsection has no '>' after the file name.
+    const std::string head = "Line <", of_file = "> of file <";
+    const std::size_t head_start = text.find(head);
+    const std::size_t number_end = text.find(of_file, head_start);
+    if (head_start == std::string::npos || number_end == std::string::npos)
       return "";
-    const unsigned int line   = std::stoul(match[1]);
-    const std::string  file   = match[2];
-    const std::string  reason = trimmed(match.suffix());
-    const std::string  at_line =
+    const std::size_t line = std::stoul(text.substr(head_start + head.size()));
+    const std::size_t file_start = number_end + of_file.size();
+    const std::string no_subsection_marker =
+      ": There is no such subsection to be entered:";
+    const std::size_t file_end = no_subsection ?
+                                   text.rfind(no_subsection_marker) :
+                                   text.find(">:", file_start);
+    if (file_end == std::string::npos)
+      return "";
+    const std::string file = text.substr(file_start, file_end - file_start);
+    const std::string at_line =
       "line " + std::to_string(line) + " of '" + file + "'";
-
-    std::ifstream     file_stream(file);
-    const Walk        in_file = walk(file_stream);
+    const auto        lines_of = in_file.path_at_line.find(file);
     const std::string path =
-      line < in_file.path_at_line.size() ? in_file.path_at_line[line] : "";
-    std::stringstream listing;
-    prm.print_parameters(listing, Handler::ShortPRM);
-    const Walk        declared = walk(listing);
+      lines_of != in_file.path_at_line.end() && line < lines_of->second.size() ?
+        lines_of->second[line] :
+        "";
+
+    if (no_include)
+      {
+        const std::string given = "file to include <";
+        const std::size_t start = text.find(given) + given.size();
+        return at_line + ": cannot open the included file '" +
+               text.substr(start, text.rfind("> cannot") - start) +
+               "' (deal.II's parser takes its path from the working "
+               "directory, not from the including file's folder)";
+      }
+
+    Walk declared;
+    {
+      std::stringstream listing;
+      prm.print_parameters(listing, Handler::ShortPRM);
+      std::vector<std::string> top;
+      walk(listing, "", top, declared);
+    }
     const std::string see =
       " ('unilateral --print-parameters' lists every parameter)";
+    const auto among =
+      [](const std::string                                     &name,
+         const std::map<std::string, std::vector<std::string>> &by_path,
+         const std::string                                     &path) {
+        const auto names = by_path.find(path);
+        return names == by_path.end() ? "" : nearest(name, names->second);
+      };
 
     if (invalid_value)
       {
-        // The value, the name and the pattern, each on a line of its own.
-        std::vector<std::string> lines;
-        std::istringstream       text_lines(text);
-        for (std::string each; std::getline(text_lines, each);)
-          lines.push_back(trimmed(each));
-        if (lines.size() < 7)
-          return "";
-        const std::string &value = lines[2], &name = lines[4];
-        return "parameter '" + (path.empty() ? "" : path + "/") + name +
-               "' = " + value + ": must be " + in_words(lines[6]) + " (" +
-               at_line + ")";
+        // The value, the name and the pattern, after fixed markers.
+        const std::string markers[] = {"The entry value",
+                                       "for the entry named",
+                                       "does not match the given pattern:"};
+        std::size_t       positions[3];
+        for (unsigned int i = 0; i < 3; ++i)
+          if ((positions[i] = text.find(markers[i])) == std::string::npos)
+            return "";
+        const auto between = [&](const unsigned int i) {
+          const std::size_t start = positions[i] + markers[i].size();
+          return trimmed(
+            text.substr(start,
+                        i < 2 ? positions[i + 1] - start : std::string::npos));
+        };
+        const std::string value = between(0);
+        return "parameter '" + (path.empty() ? "" : path + "/") + between(1) +
+               "' = " + (value.empty() ? "'' (empty)" : shortened(value)) +
+               ": must be " + in_words(between(2)) + " (" + at_line + ")";
       }
     if (no_subsection)
       {
-        // deal.II names it by its mangled path: the file's line says it.
-        const std::string leaf =
-          line < in_file.lines.size() &&
-              in_file.lines[line].rfind("subsection ", 0) == 0 ?
-            trimmed(in_file.lines[line].substr(11)) :
-            trimmed(text.substr(text.find("to be entered:") + 14));
-        const auto names = declared.subsections.find(path);
+        // deal.II names it by a mangled path: the file's line says it.
+        std::string leaf;
+        if (const auto lines = in_file.lines.find(file);
+            lines != in_file.lines.end() && lines->second.count(line))
+          leaf = trimmed(lines->second.at(line).substr(11));
         return at_line + ": " + where(path) + " has no subsection '" + leaf +
-               "'" +
-               (names == declared.subsections.end() ?
-                  "" :
-                  nearest(leaf, names->second)) +
-               see;
+               "'" + among(leaf, declared.subsections, path) + see;
       }
-    static const std::regex undeclared(R"(No entry with name <(.*)> was)");
-    if (std::regex_search(reason, match, undeclared))
+    const std::string undeclared   = "No entry with name <",
+                      declared_end = "> was declared";
+    const std::size_t name_start   = text.find(undeclared);
+    const std::size_t name_end     = text.rfind(declared_end);
+    if (name_start != std::string::npos && name_end != std::string::npos &&
+        name_end > name_start)
       {
-        const std::string        name = match[1];
+        const std::string name =
+          text.substr(name_start + undeclared.size(),
+                      name_end - name_start - undeclared.size());
         std::vector<std::string> elsewhere;
         for (const auto &[other_path, names] : declared.entries)
           if (other_path != path &&
               std::find(names.begin(), names.end(), name) != names.end())
             elsewhere.push_back("'" + other_path + "'");
-        std::string hint;
+        std::string hint = among(name, declared.entries, path);
         if (!elsewhere.empty())
           {
             hint = ": it is a parameter of ";
@@ -270,16 +346,10 @@ namespace unilateral
             hint += elsewhere.size() == 1 ? "; set it inside that subsection" :
                                             "; set it inside the one meant";
           }
-        else
-          {
-            const auto names = declared.entries.find(path);
-            hint             = names == declared.entries.end() ?
-                                 "" :
-                                 nearest(name, names->second);
-          }
-        return at_line + ": '" + name + "' is not a parameter of " +
+        return at_line + ": '" + shortened(name) + "' is not a parameter of " +
                where(path) + hint + see;
       }
-    return at_line + ": " + reason;
+    const std::size_t reason = text.find(">: ", file_start);
+    return at_line + ": " + trimmed(text.substr(reason + 3));
   }
 } // namespace unilateral

@@ -1,5 +1,8 @@
 #include <unilateral/base/text.h>
 
+#include <algorithm>
+#include <cctype>
+
 namespace unilateral
 {
   std::string
@@ -11,5 +14,50 @@ namespace unilateral
            (n == 1         ? singular :
             plural.empty() ? singular + "s" :
                              plural);
+  }
+
+  namespace
+  {
+    /// The edit distance of @p a and @p b, ignoring case.
+    std::size_t
+    distance(const std::string &a, const std::string &b)
+    {
+      std::vector<std::size_t> row(b.size() + 1);
+      for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+      for (std::size_t i = 1; i <= a.size(); ++i)
+        {
+          std::size_t diagonal = row[0];
+          row[0]               = i;
+          for (std::size_t j = 1; j <= b.size(); ++j)
+            {
+              const std::size_t above = row[j];
+              const bool        same =
+                std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                std::tolower(static_cast<unsigned char>(b[j - 1]));
+              row[j] = std::min(
+                {row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+              diagonal = above;
+            }
+        }
+      return row[b.size()];
+    }
+  } // namespace
+
+  std::string
+  nearest_name(const std::string &name, const std::vector<std::string> &names)
+  {
+    // Long names are no typing slip of anything (and would take long).
+    if (name.size() > 200)
+      return "";
+    const std::string *best   = nullptr;
+    std::size_t best_distance = std::max<std::size_t>(2, name.size() / 3) + 1;
+    for (const std::string &candidate : names)
+      if (const std::size_t d = distance(name, candidate); d < best_distance)
+        {
+          best          = &candidate;
+          best_distance = d;
+        }
+    return best == nullptr ? "" : *best;
   }
 } // namespace unilateral

@@ -16,13 +16,15 @@ namespace unilateral
    * nearest declared one, or the subsections that declare it.
    *
    * deal.II's exceptions carry the line and the file but not the
-   * subsection, so the path is read back from the file itself, and the
-   * declared names from @p prm's own listing of them.
+   * subsection, so the path is read back from @p parameter_file (and the
+   * files it includes) by the parser's own rules, and the declared names
+   * from @p prm's own listing of them.
    *
    * Returns an empty string for an exception that is not one of the
    * parser's refusals.
    */
   std::string
   explain_parse_error(const dealii::ExceptionBase    &error,
-                      const dealii::ParameterHandler &prm);
+                      const dealii::ParameterHandler &prm,
+                      const std::string              &parameter_file);
 } // namespace unilateral

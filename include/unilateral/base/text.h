@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace unilateral
 {
@@ -10,4 +11,10 @@ namespace unilateral
   quantity(unsigned long long n,
            const std::string &singular,
            const std::string &plural = "");
+
+  /// The one of @p names nearest to @p name (fewest letters to change,
+  /// ignoring case), if it is near enough to be a slip in typing it; else
+  /// empty.
+  std::string
+  nearest_name(const std::string &name, const std::vector<std::string> &names);
 } // namespace unilateral

@@ -3,6 +3,7 @@
 #include <unilateral/scenes/lcp_scene.h>
 #include <unilateral/scenes/masonry/assembly.h>
 #include <unilateral/scenes/masonry/free_motions.h>
+#include <unilateral/scenes/masonry/mechanism.h>
 #include <unilateral/scenes/masonry/mesh.h>
 #include <unilateral/scenes/masonry/mesh_file.h>
 #include <unilateral/scenes/masonry/tearing.h>
@@ -448,6 +449,18 @@ namespace unilateral::masonry
         !proved_before_solving(report) &&
         std::abs(c.normal_gap) <= 1e-10 * max_displacement &&
         std::abs(c.contact_force) <= 1e-10 * largest_force;
+
+    // Displacements that only a motion of blocks against each other along
+    // closed joints leaves open; a motion of a group no support holds is
+    // noted already (free_motions).
+    mechanism.clear();
+    if (report.converged() && free_motions.empty())
+      {
+        std::vector<char> closed(constraints.size());
+        for (std::size_t k = 0; k < constraints.size(); ++k)
+          closed[k] = constraints[k].active;
+        mechanism = answer_mechanism(contacts, closed);
+      }
     // Also where the run did not converge: the loads are then still the
     // loads, and the imbalance says how far the answer given is from
     // equilibrium (summary.json once said load 0 and imbalance 0, which
@@ -733,6 +746,13 @@ namespace unilateral::masonry
                "no equilibrium, and this answer holds only to 'Solver/KKT "
                "tolerance'); a support that holds it ('Normal displacement "
                "zero', 'Fixed') makes them unique\n";
+    if (!mechanism.empty())
+      out << "  note: the displacements are one answer of a family: "
+          << mechanism
+          << ", and the loads do no work along that motion; the energy, the "
+             "contact forces and the reactions are the same for every "
+             "member, the displacements not (a support or a prescribed "
+             "displacement that holds those blocks makes them unique)\n";
     if (report.converged() &&
         std::max(balance.force_imbalance, balance.moment_imbalance) > 1e-8)
       out << std::setprecision(1) << "  warning: the supports' reactions "
@@ -776,6 +796,7 @@ namespace unilateral::masonry
     for (std::size_t i = 0; i < free_motions.size(); ++i)
       motions[i].set("description", free_motions[i]);
     summary.set("free_rigid_motions", motions);
+    summary.set("mechanism", mechanism);
     // The coarse-mesh start, as the plate's: [] when the run had none.
     std::vector<JsonObject> coarse_levels;
     if (coarse_start.n_unknowns > 0)

@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/text.h>
 #include <unilateral/scenes/masonry/supports.h>
 
 #include <deal.II/base/function_parser.h>
@@ -129,10 +130,16 @@ namespace unilateral::masonry
         return id;
       if (!found || names.ids_on_boundary.count(id) == 0)
         {
-          std::ostringstream known;
+          std::ostringstream       known;
+          std::vector<std::string> known_names;
           for (const auto &[name, value] : names.id_of_name)
             if (names.ids_on_boundary.count(value))
-              known << (known.tellp() > 0 ? ", " : "") << name;
+              {
+                known << (known.tellp() > 0 ? ", " : "") << name;
+                known_names.push_back(name);
+              }
+          const std::string nearest =
+            nearest_name(selection.boundary, known_names);
           for (const auto value : names.ids_on_boundary)
             if (value != 0 && names.name(value) == std::to_string(value))
               known << (known.tellp() > 0 ? ", " : "") << value;
@@ -143,7 +150,9 @@ namespace unilateral::masonry
                           "is not a boundary of " + names.source +
                             " (its named boundaries: " +
                             (known.tellp() > 0 ? known.str() : "none") + "); " +
-                            names.fix);
+                            (nearest.empty() ?
+                               names.fix :
+                               "did you mean '" + nearest + "'?"));
         }
       return id;
     }

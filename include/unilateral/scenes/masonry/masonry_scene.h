@@ -296,6 +296,9 @@ namespace unilateral::masonry
     /// The groups of blocks that some rigid motion moves past every support
     /// (free_rigid_motions), one line each.
     std::vector<std::string> free_motions;
+    /// A mechanism of the answer's closed contacts (answer_mechanism), or
+    /// empty.
+    std::string mechanism;
     /// Sets of blocks that can slide along their joints (free_slides).
     std::vector<FreeSlides<dim>> slides;
     /// The proof that the loads drive one of them, or empty.
