@@ -8,9 +8,11 @@
 #include <unilateral/application.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,6 +30,18 @@ namespace application_test
   yes_no(const bool condition)
   {
     return condition ? "yes" : "no";
+  }
+
+  /// The number after "key": in a summary.json's text (NaN if absent).
+  inline double
+  number(const std::string &json, const std::string &key)
+  {
+    std::smatch found;
+    if (std::regex_search(json,
+                          found,
+                          std::regex("\"" + key + "\": *([-+0-9.eE]+)")))
+      return std::stod(found[1]);
+    return std::nan("");
   }
 
   inline void

@@ -28,18 +28,6 @@ using namespace application_test;
 
 namespace
 {
-  /// The number after "key": in the summary (NaN if absent).
-  double
-  number(const std::string &json, const std::string &key)
-  {
-    std::smatch found;
-    if (std::regex_search(json,
-                          found,
-                          std::regex("\"" + key + "\": *([-+0-9.eE]+)")))
-      return std::stod(found[1]);
-    return std::nan("");
-  }
-
   /// The arrays after each "key" in @p json, in order.
   std::vector<std::vector<double>>
   arrays(const std::string &json, const std::string &key)

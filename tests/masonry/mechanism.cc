@@ -25,18 +25,6 @@ namespace
 {
   const std::string prm_folder = SOURCE_DIR "/../../prm";
 
-  /// The number after "key": in the summary (NaN if absent).
-  double
-  number(const std::string &json, const std::string &key)
-  {
-    std::smatch found;
-    if (std::regex_search(json,
-                          found,
-                          std::regex("\"" + key + "\": *([-+0-9.eE]+)")))
-      return std::stod(found[1]);
-    return std::nan("");
-  }
-
   std::vector<double>
   numbers(const std::string &file_name)
   {
