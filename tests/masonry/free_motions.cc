@@ -7,7 +7,10 @@
 // and where the loads do work along one, the scene proves before solving
 // that there is no equilibrium (exit 2), naming the motion:
 //  - stack bond without rollers: the whole wall translates along x, and
-//    gravity does no work along it: converged, with the note;
+//    gravity does no work along it: converged, with the note, and with
+//    the note of the answer's family (masonry/mechanism.h): its blocks
+//    also slide along x on their bed joints, which open head joints leave
+//    free (so in 3D along z);
 //  - held at one base node only (a roller): translation along x and a
 //    rotation about a point on the vertical through that node (x = 0);
 //    gravity turns the wall about the roller: no equilibrium;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 namespace unilateral::masonry
@@ -68,6 +69,8 @@ namespace unilateral::masonry
       unsigned int                                            n_parts = 0;
       std::array<unsigned int, 2>                             block{};
       std::array<std::array<double, n_rigid_motions(dim)>, 2> coefficients{};
+      /// Where it acts (a joint's two nodes coincide).
+      std::array<double, dim> position{};
     };
 
     /// The conditions: n . (u_lower - u_upper) for a closed joint, n . u for
@@ -116,21 +119,41 @@ namespace unilateral::masonry
             const UnilateralConstraint<dim> &c   = contacts.constraints[k];
             Condition<dim>                  &row = result.emplace_back();
             add(row, c.lower, c.normal, 1);
+            row.position = contacts.node_position[c.lower];
             if (c.kind == ConstraintKind::joint)
               add(row, c.upper, c.normal, -1);
           }
       return result;
     }
 
-    /// The conditions' Gram matrix is scaled to a unit diagonal; a motion
-    /// whose scaled curvature is below this is a mechanism.
-    constexpr double threshold = 1e-9;
+    /**
+     * The conditions' Gram matrix is scaled block by block (one scale for a
+     * block's rigid motions, so that turning the structure changes
+     * nothing: a scale per motion made a slide along an axis, held only
+     * by a support tilted by 2e-5, free at 0 degrees and held at 30, a
+     * review); a motion whose scaled curvature is below mechanism_threshold
+     * is a mechanism: one that changes the closed gaps by less than 1e-7 of
+     * its size, where the rows themselves are rounded to about 1e-16 (a
+     * structure 1e5 from the origin: 1e-10). A block is held from the
+     * supports up (held_blocks) only beyond held_threshold: a block held
+     * more weakly is left to the whole computation.
+     */
+    constexpr double mechanism_threshold = 1e-14, held_threshold = 1e-9;
+
+    /// 1 / sqrt(mean diagonal) of @p gram, or 1 for a zero one.
+    template <typename Matrix>
+    double
+    block_scale(const Matrix &gram)
+    {
+      const double mean = gram.trace() / gram.rows();
+      return mean > 0 ? 1 / std::sqrt(mean) : 1;
+    }
 
     /**
      * The blocks that no mechanism moves, found from the supports up: a
      * block whose conditions with the ground and with blocks found already
      * hold each of its rigid motions (their scaled Gram matrix has no
-     * eigenvalue below the threshold) is held. On most walls this finds
+     * eigenvalue below held_threshold) is held. On most walls this finds
      * every block, and the null space is then not computed at all (on the
      * stack bond m = 225 that took 1.6 s).
      */
@@ -144,17 +167,25 @@ namespace unilateral::masonry
       for (unsigned int i = 0; i < conditions.size(); ++i)
         for (unsigned int p = 0; p < conditions[i].n_parts; ++p)
           of_block[conditions[i].block[p]].push_back(i);
-      std::vector<char>         held(n_blocks, 0);
+      std::vector<char>         held(n_blocks, 0), queued(n_blocks, 0);
       std::vector<unsigned int> queue;
+      // Each block once in the queue (a slab on 10,000 support nodes was
+      // queued and checked once per node, a review).
+      const auto enqueue = [&](const unsigned int b) {
+        if (!held[b] && !queued[b])
+          {
+            queued[b] = 1;
+            queue.push_back(b);
+          }
+      };
       for (const Condition<dim> &c : conditions)
         if (c.n_parts == 1)
-          queue.push_back(c.block[0]);
+          enqueue(c.block[0]);
       while (!queue.empty())
         {
           const unsigned int b = queue.back();
           queue.pop_back();
-          if (held[b])
-            continue;
+          queued[b] = 0;
           Eigen::Matrix<double, nr, nr> gram =
             Eigen::Matrix<double, nr, nr>::Zero();
           for (const unsigned int i : of_block[b])
@@ -168,25 +199,78 @@ namespace unilateral::masonry
                   gram += a * a.transpose();
                 }
             }
-          const Eigen::Matrix<double, nr, 1> diagonal = gram.diagonal();
-          if (!(diagonal.minCoeff() > 0))
-            continue;
-          const Eigen::Matrix<double, nr, 1> s =
-            diagonal.cwiseSqrt().cwiseInverse();
-          const Eigen::Matrix<double, nr, nr> scaled =
-            s.asDiagonal() * gram * s.asDiagonal();
+          const double s = block_scale(gram);
           if (Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, nr, nr>>(
-                scaled, Eigen::EigenvaluesOnly)
+                s * s * gram, Eigen::EigenvaluesOnly)
                 .eigenvalues()
-                .minCoeff() <= threshold)
+                .minCoeff() <= held_threshold)
             continue;
           held[b] = 1;
           for (const unsigned int i : of_block[b])
             for (unsigned int p = 0; p < conditions[i].n_parts; ++p)
-              if (!held[conditions[i].block[p]])
-                queue.push_back(conditions[i].block[p]);
+              enqueue(conditions[i].block[p]);
         }
       return held;
+    }
+
+    /// u at @p x of block @p b under its rigid motion @p v (its columns).
+    template <int dim>
+    std::array<double, dim>
+    displacement_at(const BlockFrames<dim>        &frames,
+                    const unsigned int             b,
+                    const double                  *v,
+                    const std::array<double, dim> &x)
+    {
+      std::array<double, dim> r, u;
+      const double            size = std::max(frames.size[b], 1e-300);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          r[d] = (x[d] - frames.centre[b][d]) / size;
+          u[d] = v[d];
+        }
+      if constexpr (dim == 2)
+        {
+          u[0] -= v[2] * r[1];
+          u[1] += v[2] * r[0];
+        }
+      else
+        for (unsigned int d = 0; d < 3; ++d)
+          u[d] += v[3 + (d + 1) % 3] * r[(d + 2) % 3] -
+                  v[3 + (d + 2) % 3] * r[(d + 1) % 3];
+      return u;
+    }
+
+    /**
+     * Whether @p motion moves the blocks of every closed joint as one body
+     * (the same displacement of both nodes, not only along the normal): a
+     * rigid motion of groups of blocks, which free_rigid_motions() noted
+     * before solving where it is free.
+     */
+    template <int dim>
+    bool
+    moves_joined_blocks_as_one(const std::vector<Condition<dim>> &conditions,
+                               const std::vector<char>           &held,
+                               const std::vector<unsigned int>   &column_of,
+                               const BlockFrames<dim>            &frames,
+                               const Eigen::VectorXd             &motion)
+    {
+      const double scale = motion.template lpNorm<Eigen::Infinity>();
+      for (const Condition<dim> &c : conditions)
+        if (c.n_parts == 2)
+          {
+            std::array<std::array<double, dim>, 2> u{};
+            for (unsigned int p = 0; p < 2; ++p)
+              if (!held[c.block[p]])
+                u[p] =
+                  displacement_at<dim>(frames,
+                                       c.block[p],
+                                       motion.data() + column_of[c.block[p]],
+                                       c.position);
+            for (unsigned int d = 0; d < dim; ++d)
+              if (std::abs(u[0][d] - u[1][d]) > 1e-6 * scale)
+                return false;
+          }
+      return true;
     }
 
     /// "blocks 15 and 17", "blocks 3, 4, 5, 6 and 12 more".
@@ -209,14 +293,40 @@ namespace unilateral::masonry
   template <int dim>
   std::string
   answer_mechanism(const ContactSet<dim>   &contacts,
-                   const std::vector<char> &closed)
+                   const std::vector<char> &closed,
+                   const bool               floating_noted)
   {
     const BlockFrames<dim> frames(contacts);
     if (frames.n_blocks == 0)
       return "";
     const std::vector<Condition<dim>> conditions =
       kept_conditions(contacts, closed, frames);
-    const std::vector<char> held = held_blocks(conditions, frames.n_blocks);
+    std::vector<char> held = held_blocks(conditions, frames.n_blocks);
+    if (floating_noted)
+      {
+        // Sets of blocks joined by closed contacts that no closed contact
+        // or support joins to anything held: their rigid motion is the
+        // free one noted before solving; set aside, so that a mechanism
+        // elsewhere is still found (a loose block beside an arch hid the
+        // arch's, a review).
+        std::vector<unsigned int> root(frames.n_blocks);
+        std::iota(root.begin(), root.end(), 0u);
+        const auto find = [&](unsigned int b) {
+          while (root[b] != b)
+            b = root[b] = root[root[b]];
+          return b;
+        };
+        for (const Condition<dim> &c : conditions)
+          if (c.n_parts == 2 && !held[c.block[0]] && !held[c.block[1]])
+            root[find(c.block[0])] = find(c.block[1]);
+        std::vector<char> anchored(frames.n_blocks, 0);
+        for (const Condition<dim> &c : conditions)
+          for (unsigned int p = 0; p < c.n_parts; ++p)
+            if (!held[c.block[p]] && (c.n_parts == 1 || held[c.block[1 - p]]))
+              anchored[find(c.block[p])] = 1;
+        for (unsigned int b = 0; b < frames.n_blocks; ++b)
+          held[b] = held[b] || !anchored[find(b)];
+      }
     // The others, column by column; a held block's motion is 0.
     constexpr unsigned int    nr = n_rigid_motions(dim);
     std::vector<unsigned int> column_of(frames.n_blocks, 0), free_blocks;
@@ -247,15 +357,20 @@ namespace unilateral::masonry
     Sparse M(row, nr * free_blocks.size());
     M.setFromTriplets(entries.begin(), entries.end());
     Sparse gram = Sparse(M.transpose()) * M;
-    // Scaled to a unit diagonal; a column no condition touches (a block
-    // nothing holds) is a mechanism by itself.
+    // Scaled block by block; a block no condition touches (nothing holds
+    // it) is a mechanism by itself.
     Eigen::VectorXd scale(gram.cols());
-    for (Eigen::Index j = 0; j < gram.cols(); ++j)
-      scale[j] = gram.coeff(j, j) > 0 ? 1 / std::sqrt(gram.coeff(j, j)) : 1;
+    for (const unsigned int b : free_blocks)
+      scale.segment(column_of[b], nr)
+        .setConstant(block_scale(
+          Eigen::MatrixXd(gram.block(column_of[b], column_of[b], nr, nr))));
     gram = scale.asDiagonal() * gram * scale.asDiagonal();
 
-    // Inverse iteration, shifted by much less than the threshold: two
-    // steps leave of every other direction (shift / its eigenvalue)^2.
+    // Inverse iteration: the Rayleigh quotient of any vector bounds the
+    // smallest eigenvalue from above, so a quotient below the threshold
+    // proves a mechanism; two steps leave of every other direction (shift /
+    // its eigenvalue)^2. The shift keeps the factorisation of an exactly
+    // singular matrix from meeting a pivot of rounding.
     constexpr double shift   = 1e-12;
     Sparse           shifted = gram;
     for (Eigen::Index j = 0; j < shifted.cols(); ++j)
@@ -272,12 +387,16 @@ namespace unilateral::masonry
         x = factor.solve(x);
         x /= x.norm();
       }
-    if (!x.allFinite() || x.dot(gram * x) > threshold)
+    if (!x.allFinite() || x.dot(gram * x) > mechanism_threshold)
       return "";
 
-    // The blocks it moves, by their share of the largest motion.
     const Eigen::VectorXd motion = scale.cwiseProduct(x);
-    std::vector<double>   amount(frames.n_blocks, 0);
+    if (floating_noted &&
+        moves_joined_blocks_as_one(conditions, held, column_of, frames, motion))
+      return ""; // the free rigid motion of a group, noted already
+
+    // The blocks it moves, by their share of the largest motion.
+    std::vector<double> amount(frames.n_blocks, 0);
     for (const unsigned int b : free_blocks)
       amount[b] = motion.segment(column_of[b], nr).norm();
     const double largest = *std::max_element(amount.begin(), amount.end());
@@ -295,7 +414,7 @@ namespace unilateral::masonry
   }
 
   template std::string
-  answer_mechanism(const ContactSet<2> &, const std::vector<char> &);
+  answer_mechanism(const ContactSet<2> &, const std::vector<char> &, bool);
   template std::string
-  answer_mechanism(const ContactSet<3> &, const std::vector<char> &);
+  answer_mechanism(const ContactSet<3> &, const std::vector<char> &, bool);
 } // namespace unilateral::masonry
