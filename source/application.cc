@@ -297,6 +297,29 @@ namespace unilateral
              "make the problem smaller (now " + scene.size_parameters() + ")";
     }
 
+    /// A run name that names a subdirectory of its own: no path in it.
+    bool
+    plain_name(const std::string &run_name)
+    {
+      return !run_name.empty() &&
+             run_name.find_first_of("/\\") == std::string::npos &&
+             run_name != "." && run_name != "..";
+    }
+
+    /// <Output/Directory>/<run name>, the directory taken from the parameter
+    /// file's folder.
+    std::filesystem::path
+    run_folder(const std::string &parameter_file,
+               const std::string &directory,
+               const std::string &run_name)
+    {
+      return std::filesystem::path(
+               directory.empty() ?
+                 "output" :
+                 resolve_relative_to(parameter_file, directory)) /
+             run_name;
+    }
+
     // A run that failed after its directory was made says so there, so
     // that the directory is not a puzzle.
     void
@@ -500,7 +523,33 @@ namespace unilateral
       RunContext               context;
       dealii::ParameterHandler prm;
       declare_parameters(prm, context.solver);
-      parse_parameter_file(prm, parameter_file);
+      try
+        {
+          parse_parameter_file(prm, parameter_file);
+        }
+      catch (const InputError &error)
+        {
+          // A file the parser refused names its run's folder all the same
+          // (read by the parser's rules): an earlier run's summary there is
+          // not left saying 'converged' as if it were this run's.
+          const std::string directory =
+            value_in_file(parameter_file, "Output", "Directory", "");
+          context.run_name =
+            value_in_file(parameter_file, "Output", "Run name", "");
+          if (context.run_name.empty())
+            context.run_name =
+              std::filesystem::path(parameter_file).stem().string();
+          context.output_directory =
+            run_folder(parameter_file, directory, context.run_name);
+          if (ranks::this_rank() == 0 && plain_name(context.run_name) &&
+              std::filesystem::exists(context.output_directory /
+                                      "summary.json"))
+            write_error_summary(
+              context,
+              value_in_file(parameter_file, "", "Scene", default_scene()),
+              error.what());
+          throw;
+        }
 
       const SceneInfo &scene_info   = SceneRegistry::get(prm.get("Scene"));
       const double     memory_limit = 1e9 * prm.get_double("Memory limit");
@@ -513,10 +562,7 @@ namespace unilateral
       if (context.run_name.empty())
         context.run_name =
           std::filesystem::path(parameter_file).stem().string();
-      check_parameter(!context.run_name.empty() &&
-                        context.run_name.find_first_of("/\\") ==
-                          std::string::npos &&
-                        context.run_name != "." && context.run_name != "..",
+      check_parameter(plain_name(context.run_name),
                       "Output",
                       "Run name",
                       context.run_name,
@@ -531,10 +577,7 @@ namespace unilateral
       const bool progress    = prm.get_bool("Progress");
       prm.leave_subsection();
       context.output_directory =
-        std::filesystem::path(
-          directory.empty() ? "output" :
-                              resolve_relative_to(parameter_file, directory)) /
-        context.run_name;
+        run_folder(parameter_file, directory, context.run_name);
       // Rank 0 writes for all ranks, which compute the same answer; a scene
       // that writes its VTU in pieces has every rank write its own.
       context.writes_files = ranks::this_rank() == 0;

@@ -47,6 +47,8 @@ namespace unilateral
       std::map<std::string, std::map<std::size_t, std::string>> lines;
       /// The path at the end of the file walked.
       std::string path_at_end;
+      /// The last value set for each "path/name".
+      std::map<std::string, std::string> values;
       /// Per subsection path: the entries and the subsections in it.
       std::map<std::string, std::vector<std::string>> entries, subsections;
     };
@@ -109,8 +111,14 @@ namespace unilateral
                 path.pop_back();
             }
           else if (starts_with(line, "set "))
-            result.entries[joined(path)].push_back(
-              trimmed(line.substr(4, line.find('=') - 4)));
+            {
+              const std::size_t equals = line.find('=');
+              const std::string name   = trimmed(line.substr(4, equals - 4));
+              result.entries[joined(path)].push_back(name);
+              if (equals != std::string::npos)
+                result.values[joined(path) + "/" + name] =
+                  trimmed(line.substr(equals + 1));
+            }
           else if (starts_with(line, "include") && depth < 16)
             {
               // Opened as the parser opens it: by the name as written.
@@ -351,5 +359,19 @@ namespace unilateral
       }
     const std::size_t reason = text.find(">: ", file_start);
     return at_line + ": " + trimmed(text.substr(reason + 3));
+  }
+
+  std::string
+  value_in_file(const std::string &parameter_file,
+                const std::string &path,
+                const std::string &name,
+                const std::string &otherwise)
+  {
+    Walk                     in_file;
+    std::ifstream            stream(parameter_file);
+    std::vector<std::string> top;
+    walk(stream, parameter_file, top, in_file);
+    const auto value = in_file.values.find(path + "/" + name);
+    return value == in_file.values.end() ? otherwise : value->second;
   }
 } // namespace unilateral

@@ -208,6 +208,18 @@ main()
               << holds(summary.str(), "\"status\": \"error\"")
               << ", with the message: "
               << holds(summary.str(), "'single' uses one") << "\n";
+    // The same where deal.II's parser refuses the file (a misspelt name).
+    run("rerun", masonry_prm("  set Blocks per side = 2\n"), error);
+    const int misspelt =
+      run("rerun", masonry_prm("  set Blocks per sid = 2\n"), error);
+    std::ifstream     again("results/rerun/summary.json");
+    std::stringstream after;
+    after << again.rdbuf();
+    std::cout << "a misspelt name in an earlier run's folder: exit code "
+              << misspelt << ", its summary.json now says 'error': "
+              << holds(after.str(), "\"status\": \"error\"")
+              << ", with the message: "
+              << holds(after.str(), "did you mean 'Blocks per side'") << "\n";
   }
   // A wall too large for the memory it may use: refused before its
   // matrix is built (1 MB is less than the test already holds).

@@ -27,4 +27,17 @@ namespace unilateral
   explain_parse_error(const dealii::ExceptionBase    &error,
                       const dealii::ParameterHandler &prm,
                       const std::string              &parameter_file);
+
+  /**
+   * The value that @p parameter_file (and the files it includes) sets for
+   * parameter @p name of subsection @p path ("" for the top level), read
+   * by the parser's rules, or @p otherwise where it sets none: what must be
+   * known of a file that the parser refused (the run's folder, to mark an
+   * earlier run's summary there as not this run's).
+   */
+  std::string
+  value_in_file(const std::string &parameter_file,
+                const std::string &path,
+                const std::string &name,
+                const std::string &otherwise);
 } // namespace unilateral
