@@ -297,6 +297,16 @@ namespace unilateral
              "make the problem smaller (now " + scene.size_parameters() + ")";
     }
 
+    /// 'Output/Run name' = @p setting, or the parameter file's name without
+    /// extension where it is empty.
+    std::string
+    run_name_of(const std::string &parameter_file, const std::string &setting)
+    {
+      return setting.empty() ?
+               std::filesystem::path(parameter_file).stem().string() :
+               setting;
+    }
+
     /// A run name that names a subdirectory of its own: no path in it.
     bool
     plain_name(const std::string &run_name)
@@ -534,11 +544,9 @@ namespace unilateral
           // not left saying 'converged' as if it were this run's.
           const std::string directory =
             value_in_file(parameter_file, "Output", "Directory", "");
-          context.run_name =
-            value_in_file(parameter_file, "Output", "Run name", "");
-          if (context.run_name.empty())
-            context.run_name =
-              std::filesystem::path(parameter_file).stem().string();
+          context.run_name = run_name_of(
+            parameter_file,
+            value_in_file(parameter_file, "Output", "Run name", ""));
           context.output_directory =
             run_folder(parameter_file, directory, context.run_name);
           if (ranks::this_rank() == 0 && plain_name(context.run_name) &&
@@ -558,10 +566,7 @@ namespace unilateral
       context.parameter_file = parameter_file;
       prm.enter_subsection("Output");
       const std::string directory = prm.get("Directory");
-      context.run_name            = prm.get("Run name");
-      if (context.run_name.empty())
-        context.run_name =
-          std::filesystem::path(parameter_file).stem().string();
+      context.run_name = run_name_of(parameter_file, prm.get("Run name"));
       check_parameter(plain_name(context.run_name),
                       "Output",
                       "Run name",

@@ -13,45 +13,11 @@ namespace unilateral::masonry
 {
   namespace
   {
-    constexpr unsigned int
-    n_rigid_motions(const int dim)
-    {
-      return dim == 2 ? 3 : 6;
-    }
-
     /// The rounding of a unit quantity.
     constexpr double epsilon = std::numeric_limits<double>::epsilon();
 
     template <int dim>
     using RigidVector = Eigen::Matrix<double, n_rigid_motions(dim), 1>;
-
-    /// Groups of blocks linked by joints (union-find on the joints' blocks).
-    class BlockGroups
-    {
-    public:
-      explicit BlockGroups(const unsigned int n_blocks)
-        : parent(n_blocks)
-      {
-        std::iota(parent.begin(), parent.end(), 0u);
-      }
-
-      unsigned int
-      root(unsigned int b)
-      {
-        while (parent[b] != b)
-          b = parent[b] = parent[parent[b]];
-        return b;
-      }
-
-      void
-      join(const unsigned int a, const unsigned int b)
-      {
-        parent[root(a)] = root(b);
-      }
-
-    private:
-      std::vector<unsigned int> parent;
-    };
 
     template <int dim>
     std::string
@@ -227,18 +193,6 @@ namespace unilateral::masonry
       for (unsigned int c = 0; c < dim; ++c)
         sum += a[c] * b[c];
       return sum;
-    }
-
-    /// The number of blocks (their indices run from 0); 0 without nodes.
-    template <int dim>
-    unsigned int
-    n_blocks_of(const ContactSet<dim> &contacts)
-    {
-      return contacts.node_block.empty() ?
-               0 :
-               *std::max_element(contacts.node_block.begin(),
-                                 contacts.node_block.end()) +
-                 1;
     }
 
     template <std::size_t n>
@@ -632,6 +586,17 @@ namespace unilateral::masonry
   } // namespace
 
   template <int dim>
+  unsigned int
+  n_blocks_of(const ContactSet<dim> &contacts)
+  {
+    return contacts.node_block.empty() ?
+             0 :
+             *std::max_element(contacts.node_block.begin(),
+                               contacts.node_block.end()) +
+               1;
+  }
+
+  template <int dim>
   std::vector<std::string>
   free_rigid_motions(const ContactSet<dim> &contacts)
   {
@@ -774,6 +739,10 @@ namespace unilateral::masonry
   loads_driving_a_free_motion(const ContactSet<3>              &contacts,
                               const std::vector<FreeSlides<3>> &slides,
                               const std::vector<double>        &load);
+  template unsigned int
+  n_blocks_of(const ContactSet<2> &contacts);
+  template unsigned int
+  n_blocks_of(const ContactSet<3> &contacts);
   template std::vector<std::string>
   free_rigid_motions(const ContactSet<2> &contacts);
   template std::vector<std::string>

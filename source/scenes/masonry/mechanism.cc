@@ -1,4 +1,5 @@
 #include <unilateral/base/text.h>
+#include <unilateral/scenes/masonry/free_motions.h>
 #include <unilateral/scenes/masonry/mechanism.h>
 
 #include <Eigen/Eigenvalues>
@@ -7,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <sstream>
 
 namespace unilateral::masonry
@@ -15,12 +15,6 @@ namespace unilateral::masonry
   namespace
   {
     using Sparse = Eigen::SparseMatrix<double>;
-
-    constexpr unsigned int
-    n_rigid_motions(const int dim)
-    {
-      return dim == 2 ? 3 : 6;
-    }
 
     /// The blocks' centres and sizes (largest distance of a node from the
     /// centre), in which their rigid motions are written: u(x) = t + w x
@@ -30,8 +24,7 @@ namespace unilateral::masonry
     {
       explicit BlockFrames(const ContactSet<dim> &contacts)
       {
-        for (const unsigned int b : contacts.node_block)
-          n_blocks = std::max(n_blocks, b + 1);
+        n_blocks = n_blocks_of(contacts);
         centre.assign(n_blocks, {});
         size.assign(n_blocks, 0);
         std::vector<unsigned int> n_nodes(n_blocks, 0);
@@ -309,23 +302,17 @@ namespace unilateral::masonry
         // free one noted before solving; set aside, so that a mechanism
         // elsewhere is still found (a loose block beside an arch hid the
         // arch's, a review).
-        std::vector<unsigned int> root(frames.n_blocks);
-        std::iota(root.begin(), root.end(), 0u);
-        const auto find = [&](unsigned int b) {
-          while (root[b] != b)
-            b = root[b] = root[root[b]];
-          return b;
-        };
+        BlockGroups sets(frames.n_blocks);
         for (const Condition<dim> &c : conditions)
           if (c.n_parts == 2 && !held[c.block[0]] && !held[c.block[1]])
-            root[find(c.block[0])] = find(c.block[1]);
+            sets.join(c.block[0], c.block[1]);
         std::vector<char> anchored(frames.n_blocks, 0);
         for (const Condition<dim> &c : conditions)
           for (unsigned int p = 0; p < c.n_parts; ++p)
             if (!held[c.block[p]] && (c.n_parts == 1 || held[c.block[1 - p]]))
-              anchored[find(c.block[p])] = 1;
+              anchored[sets.root(c.block[p])] = 1;
         for (unsigned int b = 0; b < frames.n_blocks; ++b)
-          held[b] = held[b] || !anchored[find(b)];
+          held[b] = held[b] || !anchored[sets.root(b)];
       }
     // The others, column by column; a held block's motion is 0.
     constexpr unsigned int    nr = n_rigid_motions(dim);

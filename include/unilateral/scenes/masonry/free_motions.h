@@ -2,11 +2,53 @@
 
 #include <unilateral/scenes/masonry/contact_detection.h>
 
+#include <numeric>
 #include <string>
 #include <vector>
 
 namespace unilateral::masonry
 {
+  /// A block's rigid motions: dim translations and dim (dim - 1) / 2
+  /// rotations.
+  constexpr unsigned int
+  n_rigid_motions(const int dim)
+  {
+    return dim == 2 ? 3 : 6;
+  }
+
+  /// The number of blocks (their indices run from 0); 0 without nodes.
+  template <int dim>
+  unsigned int
+  n_blocks_of(const ContactSet<dim> &contacts);
+
+  /// Groups of blocks linked by joints (union-find on the joints' blocks).
+  class BlockGroups
+  {
+  public:
+    explicit BlockGroups(const unsigned int n_blocks)
+      : parent(n_blocks)
+    {
+      std::iota(parent.begin(), parent.end(), 0u);
+    }
+
+    unsigned int
+    root(unsigned int b)
+    {
+      while (parent[b] != b)
+        b = parent[b] = parent[parent[b]];
+      return b;
+    }
+
+    void
+    join(const unsigned int a, const unsigned int b)
+    {
+      parent[root(a)] = root(b);
+    }
+
+  private:
+    std::vector<unsigned int> parent;
+  };
+
   /**
    * The rigid motions that no support resists, for each group of blocks
    * linked by joints. A rigid motion of a whole group keeps the gaps of
