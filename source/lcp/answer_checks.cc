@@ -49,6 +49,16 @@ namespace unilateral::lcp
       return scale;
     }
 
+    /// The largest residual of an answer whose forces are @p scale: the
+    /// tolerance in force units, plus ten times the rounding error of A u
+    /// (an answer exact to double precision shows that much).
+    double
+    allowance(const ForceScale &scale, const double kkt_tolerance)
+    {
+      return kkt_tolerance * scale.forces +
+             10 * scale.resolution * scale.forces;
+    }
+
     /// Where A is definite (every body held) an answer that fails a check
     /// has not converged, whatever its method's own test said.
     constexpr const char *stopped_short =
@@ -241,11 +251,8 @@ namespace unilateral::lcp
         residual = std::max(
           {residual, -lambda[i], std::min(slack * stiffness, lambda[i])});
       }
-    const double forces     = scale.forces;
-    const double resolution = scale.resolution;
-    // The residual cannot be known more finely than the rounding of A u:
-    // an answer exact to double precision shows that much.
-    const double       rounding = 10 * resolution * forces;
+    const double       forces     = scale.forces;
+    const double       resolution = scale.resolution;
     std::ostringstream message;
     message << std::setprecision(3);
     // Where A is definite no rigid motion hides in |A| |u|: its size
@@ -263,7 +270,7 @@ namespace unilateral::lcp
               << " of their size; give the loads, the stiffness and the "
                  "gaps in units closer to each other, or accept that "
                  "accuracy with a larger 'KKT tolerance'";
-    else if (residual > kkt_tolerance * forces + rounding)
+    else if (residual > allowance(scale, kkt_tolerance))
       message << "the forces of the answer do not balance the loads: the "
                  "residual is "
               << residual / forces
@@ -280,5 +287,17 @@ namespace unilateral::lcp
     else
       return;
     downgrade(report, message.str());
+  }
+
+  double
+  balance_allowance(const Problem &problem,
+                    const Vector  &u,
+                    const Vector  &lambda,
+                    const double   kkt_tolerance)
+  {
+    const ForceScale scale = force_scale(problem, u, lambda);
+    if (!(scale.forces > 0))
+      return std::numeric_limits<double>::infinity();
+    return allowance(scale, kkt_tolerance);
   }
 } // namespace unilateral::lcp

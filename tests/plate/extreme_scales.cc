@@ -54,6 +54,14 @@
 //     scaled energy, 1e-590, underflowed before the scene multiplied it
 //     back), and the run at 1e-250 failed its work check with W = NaN (b_i
 //     u_i beyond double's range).
+// 13. elements 2000 times longer than wide across psi3's crest line (2 x
+//     4000; psi3 varies along x only): the interior point and TNNMG
+//     (handing over to PDAS) ended 'inaccurate' with a contact pulling at
+//     3e-4 of the largest force, kept active by PDAS's rounding tolerance
+//     (Round-off tolerance times |A| |u|, A_ii up to 5e13 against loads of
+//     1); PDAS alone happened to converge. Now all three give its answer.
+//     Likewise PDAS on 2000 x 2 elements over psi2 (1321 contacts, one
+//     pulling at 6e-5 of the largest force; the answer has 1319).
 #include "plate_runs.h"
 
 #include <cmath>
@@ -240,6 +248,37 @@ main()
                       "NO")
                 << "\n";
     }
+  // 13: the same elements across the obstacle's crest line, and along
+  // psi2: every method converges to one answer.
+  {
+    const std::string plate =
+      "subsection Geometry\n  set Elements x = 2000\n  set Elements y = 2\n"
+      "end\nsubsection Obstacle\n  set Function = psi2\nend\n";
+    const Run pdas = run_plate("psi2_pdas", plate, "pdas");
+    const Run ip   = run_plate("psi2_ip", plate, "interior_point");
+    std::cout << "elements 1000 times longer than wide over psi2, pdas: "
+              << unilateral::lcp::to_string(pdas.report.status)
+              << ", the interior point's energy (1e-10): "
+              << same_energy(pdas, ip) << ", centre deflection and contact "
+              << "nodes: " << (same_answer(pdas, ip) ? "yes" : "NO") << "\n";
+  }
+  {
+    const std::string plate =
+      "subsection Geometry\n  set Elements x = 2\n  set Elements y = 4000\n"
+      "end\nsubsection Obstacle\n  set Function = psi3\nend\n";
+    const Run pdas = run_plate("crest_pdas", plate, "pdas");
+    std::cout << "elements 2000 times longer than wide along the crest, pdas: "
+              << unilateral::lcp::to_string(pdas.report.status) << "\n";
+    for (const std::string method : {"tnnmg", "interior_point"})
+      {
+        const Run run = run_plate("crest_" + method, plate, method);
+        std::cout << "  " << method << ": "
+                  << unilateral::lcp::to_string(run.report.status)
+                  << ", pdas's energy (1e-10): " << same_energy(run, pdas)
+                  << ", centre deflection and contact nodes: "
+                  << (same_answer(run, pdas) ? "yes" : "NO") << "\n";
+      }
+  }
   for (const std::string height : {"1",
                                    "0",
                                    "psi3",

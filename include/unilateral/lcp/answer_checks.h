@@ -87,5 +87,19 @@ namespace unilateral::lcp
                 const Solution &solution,
                 double          kkt_tolerance,
                 Report         &report);
+
+  /**
+   * The largest residual check_balance lets pass for @p u and its
+   * multipliers @p lambda = A u - b: @p kkt_tolerance F plus ten times the
+   * rounding error epsilon |A| |u|_inf, in force units; infinity where
+   * there is nothing to balance (no loads, no contact force). For a
+   * method's own stopping test, so that it does not stop at an answer this
+   * check refuses (PDAS keeping a contact that pulls).
+   */
+  double
+  balance_allowance(const Problem &problem,
+                    const Vector  &u,
+                    const Vector  &lambda,
+                    double         kkt_tolerance);
   /// @}
 } // namespace unilateral::lcp

@@ -31,6 +31,7 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/text.h>
 #include <unilateral/lcp/active_set_system.h>
+#include <unilateral/lcp/answer_checks.h>
 #include <unilateral/lcp/solver.h>
 #include <unilateral/lcp/subset_resolution.h>
 #include <unilateral/lcp/unbounded_direction.h>
@@ -129,14 +130,25 @@ namespace unilateral::lcp
      * sides on round-off, and PDAS never stops. A free index below its bound
      * by more than the slack's own rounding error becomes active: the
      * tolerance of the multiplier's term must not let an infeasible u pass.
+     * Nor a pulling contact (BalanceLimit): an active index whose multiplier
+     * is negative beyond what the driver's balance check allows is freed
+     * whatever the rounding tolerance says, when nothing else changes. Where
+     * |A| |u| is far larger than the forces (a plate of elements 2000 times
+     * longer than wide: A_ii 1e14 against loads of 1), the tolerance,
+     * 'Round-off tolerance' times |A| |u|, exceeds the contact forces
+     * themselves; PDAS then stopped with a contact pulling at 3e-4 of the
+     * largest force, which the driver refused as 'inaccurate'.
      */
     class RoundingTest
     {
     public:
-      RoundingTest(const Problem &problem, const PdasParameters &options)
+      RoundingTest(const Problem        &problem,
+                   const PdasParameters &options,
+                   const double          kkt_tolerance)
         : problem(problem)
         , tau(options.tau)
         , round_off(options.round_off)
+        , kkt_tolerance(kkt_tolerance)
       {}
 
       /// The constrained indices on the wrong side of the test.
@@ -145,6 +157,11 @@ namespace unilateral::lcp
       {
         const Vector       lambda = problem.A * u - problem.b;
         std::vector<Index> result;
+        std::vector<Index> pulling;
+        // Below this no multiplier can fail the balance check (its
+        // allowance is at least the tolerance times the loads).
+        const double least_allowance =
+          kkt_tolerance * problem.b.lpNorm<Eigen::Infinity>();
         for (Index k = 0; k < problem.n_constrained(); ++k)
           {
             const Index i         = problem.constrained[k];
@@ -175,14 +192,37 @@ namespace unilateral::lcp
                           test < -tolerance || slack < -slack_rounding;
             if (now_active != static_cast<bool>(active[i]))
               result.push_back(i);
+            else if (active[i] && lambda[i] < -least_allowance)
+              pulling.push_back(i);
           }
-        return result;
+        return BalanceLimit(u, lambda, pulling, result);
       }
 
     private:
+      /// @p result with the @p pulling active indices added whose
+      /// multiplier the driver's balance check would refuse.
+      std::vector<Index>
+      BalanceLimit(const Vector             &u,
+                   const Vector             &lambda,
+                   const std::vector<Index> &pulling,
+                   std::vector<Index>        result) const
+      {
+        // Only where PDAS would otherwise stop: earlier, the multipliers of
+        // an active set still changing are not the answer's.
+        if (pulling.empty() || !result.empty())
+          return result;
+        const double allowance =
+          balance_allowance(problem, u, lambda, kkt_tolerance);
+        for (const Index i : pulling) // ascending, as the test's result
+          if (lambda[i] < -allowance)
+            result.push_back(i);
+        return result;
+      }
+
       const Problem &problem;
       const double   tau;
       const double   round_off;
+      const double   kkt_tolerance;
     };
 
     /**
@@ -448,6 +488,7 @@ namespace unilateral::lcp
         , options(options)
         , safeguards_on(options.safeguard > 0)
         , stop_as_cycling(safeguards_on && parameters.max_iterations == 0)
+        , kkt_tolerance(parameters.kkt_tolerance)
         , report(report)
         , u(solution.u)
         // The system owns the given factor while it runs (solution.factor
@@ -507,7 +548,8 @@ namespace unilateral::lcp
         if (iteration > 0 || given_active.empty())
           {
             ++report.counters.matrix_vector_products; // lambda = A u - b
-            return RoundingTest(problem, options).violated(u, active);
+            return RoundingTest(problem, options, kkt_tolerance)
+              .violated(u, active);
           }
         std::vector<Index> result;
         for (const Index i : problem.constrained)
@@ -736,7 +778,10 @@ namespace unilateral::lcp
       const PdasParameters &options;
       const bool            safeguards_on;
       /// At the default iteration limit PDAS stops as cycling (CyclingStop).
-      const bool        stop_as_cycling;
+      const bool stop_as_cycling;
+      /// 'Solver/KKT tolerance', which the active-set test's BalanceLimit
+      /// applies.
+      const double      kkt_tolerance;
       Report           &report;
       Vector           &u;
       ActiveSetSystem   system;
