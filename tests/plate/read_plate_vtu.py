@@ -103,8 +103,15 @@ def main(run_directory):
                                            "contact", "contact_force")))
     keys = numpy.round(points_n[:, :2] / [h1, h2]).astype(int)
     _, unique = numpy.unique(keys, axis=0, return_index=True)
-    verdict("nodes.vtu: its points are the (n1+1)(n2+1) mesh nodes",
+    # Each node once (a review: a point per node and cell repeated the
+    # contact force four times in ParaView's sums), as a vertex cell.
+    verdict("nodes.vtu: its points are the (n1+1)(n2+1) mesh nodes, each once, "
+            "each a vertex cell",
             len(unique) == (n1 + 1) * (n2 + 1) and
+            len(points_n) == len(unique) and
+            grid_n.GetNumberOfCells() == len(unique) and
+            all(grid_n.GetCellType(c) == vtk.VTK_VERTEX
+                for c in range(grid_n.GetNumberOfCells())) and
             numpy.all(numpy.abs(points_n[:, :2] - keys * [h1, h2]) < 1e-9 * L1))
     contact = nodes["contact"][unique]
     gap = nodes["gap"][unique]

@@ -97,8 +97,11 @@ namespace unilateral::plate
       const double                       poisson_ratio;
     };
 
+    /// name.vtu, written by @p write_vtu (given the VTK flags and the
+    /// file), and name.pvd, which refers to it.
+    template <typename Writer>
     void
-    write_vtu_and_pvd(dealii::DataOut<2>          &data_out,
+    write_vtu_and_pvd(const Writer                &write_vtu,
                       const std::filesystem::path &directory,
                       const std::string           &name)
     {
@@ -107,13 +110,12 @@ namespace unilateral::plate
       // writes with the fastest level too.
       dealii::DataOutBase::VtkFlags flags;
       flags.compression_level = dealii::DataOutBase::VtkFlags::best_speed;
-      data_out.set_flags(flags);
-      const std::string vtu = name + ".vtu";
+      const std::string vtu   = name + ".vtu";
       {
         std::ofstream file(directory / vtu);
         if (!file)
           throw InputError("cannot write '" + (directory / vtu).string() + "'");
-        data_out.write_vtu(file);
+        write_vtu(flags, file);
         close_written_file(file, (directory / vtu).string());
       }
       const std::filesystem::path record = directory / (name + ".pvd");
@@ -131,9 +133,9 @@ namespace unilateral::plate
    * points reproduces a bicubic exactly, so what ParaView shows is the BFS
    * field itself, sampled at (Subdivisions + 1)^2 points per cell.
    *
-   * nodes.vtu: the LCP at the mesh nodes, one point per node and cell, no
-   * subdivisions, so the 0/1 contact flag stays 0/1: w, w_x, w_y, w_xy, psi,
-   * gap, contact and the contact force lambda (kg, zero off J1).
+   * nodes.vtu: the LCP at the mesh nodes, one point (a vertex cell) per
+   * node: w, w_x, w_y, w_xy, psi, gap, contact (0/1) and the contact force
+   * lambda (kg, zero off J1).
    */
   void
   PlateScene::output_results(const RunContext &context) const
@@ -179,17 +181,26 @@ namespace unilateral::plate
       data_out.add_data_vector(deflection, "deflection");
       data_out.add_data_vector(deflection, derived);
       data_out.build_patches(parameters.output.subdivisions);
-      write_vtu_and_pvd(data_out, context.output_directory, "plate");
+      write_vtu_and_pvd(
+        [&](const dealii::DataOutBase::VtkFlags &flags, std::ostream &file) {
+          data_out.set_flags(flags);
+          data_out.write_vtu(file);
+        },
+        context.output_directory,
+        "plate");
     }
 
-    // Nodal quantities on FE_Q(1), filled vertex by vertex.
-    const dealii::FE_Q<2> fe_linear(1);
-    dealii::DoFHandler<2> linear_dofs(triangulation);
-    linear_dofs.distribute_dofs(fe_linear);
-    const unsigned int     n = linear_dofs.n_dofs();
-    dealii::Vector<double> w(n), w_x(n), w_y(n), w_xy(n), psi(n), gap(n),
-      contact(n), contact_force(n);
-
+    // Nodal quantities, vertex by vertex; one point per vertex (a patch of
+    // dimension 0 each), so that counts and sums over the points in
+    // ParaView are the nodes' (a DataOut on the mesh repeats each node in
+    // every cell around it: four times the contact force, a review).
+    std::vector<std::string> names = {"deflection",
+                                      "slope_x",
+                                      "slope_y",
+                                      "twist"};
+    if (obstacle != nullptr)
+      names.insert(names.end(), {"obstacle", "gap"});
+    names.insert(names.end(), {"contact", "contact_force"});
     std::vector<double> force_at_vertex(triangulation.n_vertices(), 0.0);
     std::vector<char>   contact_at_vertex(triangulation.n_vertices(), 0);
     {
@@ -203,45 +214,47 @@ namespace unilateral::plate
           contact_at_vertex[bound_vertex[k]] = active[i];
         }
     }
+    std::vector<char> written(triangulation.n_vertices(), 0);
+    std::vector<dealii::DataOutBase::Patch<0, 2>> patches;
+    patches.reserve(triangulation.n_used_vertices());
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const auto coefficients =
           cell_coefficients(cell, bfs_index, dof_values);
-        const dealii::DoFHandler<2>::active_cell_iterator linear_cell(
-          &triangulation, cell->level(), cell->index(), &linear_dofs);
         for (unsigned int v = 0; v < 4; ++v)
           {
-            using Element             = fe::BognerFoxSchmit;
-            const auto         i      = linear_cell->vertex_dof_index(v, 0);
             const unsigned int vertex = cell->vertex_index(v);
-            w[i]   = coefficients[Element::local_index(v, Element::deflection)];
-            w_x[i] = coefficients[Element::local_index(v, Element::slope_x)];
-            w_y[i] = coefficients[Element::local_index(v, Element::slope_y)];
-            w_xy[i] = coefficients[Element::local_index(v, Element::twist)];
+            if (written[vertex])
+              continue;
+            written[vertex]            = 1;
+            using Element              = fe::BognerFoxSchmit;
+            std::vector<double> values = {
+              coefficients[Element::local_index(v, Element::deflection)],
+              coefficients[Element::local_index(v, Element::slope_x)],
+              coefficients[Element::local_index(v, Element::slope_y)],
+              coefficients[Element::local_index(v, Element::twist)]};
             if (obstacle != nullptr)
               {
-                psi[i] = obstacle->value(cell->vertex(v));
-                gap[i] = w[i] - psi[i];
+                const double psi = obstacle->value(cell->vertex(v));
+                values.insert(values.end(), {psi, values[0] - psi});
               }
-            contact[i]       = contact_at_vertex[vertex];
-            contact_force[i] = force_at_vertex[vertex];
+            values.insert(values.end(),
+                          {static_cast<double>(contact_at_vertex[vertex]),
+                           force_at_vertex[vertex]});
+            dealii::DataOutBase::Patch<0, 2> patch;
+            patch.vertices[0] = cell->vertex(v);
+            patch.patch_index = static_cast<unsigned int>(patches.size());
+            patch.data.reinit(values.size(), 1);
+            for (unsigned int c = 0; c < values.size(); ++c)
+              patch.data(c, 0) = static_cast<float>(values[c]);
+            patches.push_back(std::move(patch));
           }
       }
-
-    dealii::DataOut<2> data_out;
-    data_out.attach_dof_handler(linear_dofs);
-    data_out.add_data_vector(w, "deflection");
-    data_out.add_data_vector(w_x, "slope_x");
-    data_out.add_data_vector(w_y, "slope_y");
-    data_out.add_data_vector(w_xy, "twist");
-    if (obstacle != nullptr)
-      {
-        data_out.add_data_vector(psi, "obstacle");
-        data_out.add_data_vector(gap, "gap");
-      }
-    data_out.add_data_vector(contact, "contact");
-    data_out.add_data_vector(contact_force, "contact_force");
-    data_out.build_patches();
-    write_vtu_and_pvd(data_out, context.output_directory, "nodes");
+    write_vtu_and_pvd(
+      [&](const dealii::DataOutBase::VtkFlags &flags, std::ostream &file) {
+        dealii::DataOutBase::write_vtu(patches, names, {}, flags, file);
+      },
+      context.output_directory,
+      "nodes");
   }
 } // namespace unilateral::plate
