@@ -8,10 +8,13 @@ Usage: read_masonry_vtu.py RUN_DIRECTORY patch|settle
           density 1): the exact column solution u_x = 0, sigma_yy = -(1 - y),
           u_y(1) = -1/(2 (lambda + 2 mu)); every contact node below the top
           is closed and carries the pressure 1 - y (horizontal joints, base)
-          or nu/(1 - nu) (1 - y) (vertical joints only).
-  settle: any run with gap g > 0: the settlement shows (min u_y <= -g),
-          gaps and pressures are nonnegative, active nodes are closed, nodes
-          with pressure are active; and the contact fields are not empty:
+          or nu/(1 - nu) (1 - y) (vertical joints only); the base's rollers
+          (x > 0.5) show their reaction, 1, as pressure.
+  settle: any built-in wall with gap g > 0: the settlement shows (min u_y
+          <= -g), gaps are nonnegative, and pressures off the rollers
+          (sides, base x >= 0.5), active nodes are closed, nodes with
+          pressure off the rollers are active, the rollers show reactions
+          and zero gaps; and the contact fields are not empty:
           some node is active, some pressure is > 0, the open joints show
           (max normal gap >= g/2), and the active nodes agree with the size
           of the active set in summary.json (n_active; see count_bounds).
@@ -154,15 +157,16 @@ def main():
         verdict("von_mises = (1 - 2 nu)/(1 - nu) (1 - y)",
                 all(abs(fields["von_mises"][i] - von_mises * (1 - y[i]))
                     <= 1e-5 for i in range(n_points)))
-        # Horizontal joints and the Signorini base carry sigma_yy = -(1 - y);
-        # nodes only on vertical joints carry sigma_xx = nu/(1 - nu) sigma_yy;
-        # the output shows the larger at block corners.
+        # Horizontal joints and the base, Signorini (x < 0.5) and rollers
+        # alike, carry sigma_yy = -(1 - y); nodes only on vertical joints
+        # carry sigma_xx = nu/(1 - nu) sigma_yy; the output shows the larger
+        # at block corners. (The rollers' half of the base showed 0, or the
+        # vertical joints' nu/(1 - nu) at block corners, until a review.)
         H = summary["block_height"]
 
         def expected_pressure(i):
             on_course_line = abs(y[i] / H - round(y[i] / H)) < 1e-6
-            horizontal = on_course_line and (y[i] > 1e-9 or x[i] < 0.5)
-            return (1 - y[i]) * (1.0 if horizontal else nu / (1 - nu))
+            return (1 - y[i]) * (1.0 if on_course_line else nu / (1 - nu))
         contact = [i for i in range(n_points)
                    if active[i] == 1 and y[i] < 1 - 1e-9]
         verdict("contact nodes below the top: pressure = -sigma_nn, gap = 0",
@@ -174,6 +178,13 @@ def main():
         verdict("every base node left of x = 0.5 is an active contact",
                 len(base_signorini) > 0 and
                 all(active[i] == 1 for i in base_signorini))
+        base_rollers = [i for i in range(n_points)
+                        if abs(y[i]) < 1e-9 and x[i] > 0.5 + 1e-9]
+        verdict("every base node right of x = 0.5 (rollers) shows pressure 1 "
+                "and gap 0",
+                len(base_rollers) > 0 and
+                all(abs(pressure[i] - 1) <= 1e-5 and gap[i] == 0
+                    for i in base_rollers))
     elif mode == "column3d":
         nu, H = 0.3, summary["block_height"]
         verdict("contact pressures in [0, 1] (to 1e-2)",
@@ -204,14 +215,28 @@ def main():
         g = summary["gap"]
         verdict(f"settlement shows: min u_y <= -g = {-g}",
                 min(u[:, 1]) <= -g)
-        verdict("normal gaps >= 0 and pressures >= 0",
-                min(gap) >= -1e-9 and min(pressure) >= -1e-9)
+        # The built-in walls' rollers: both sides, and the base from the
+        # end of its Signorini part (x = 0.5) on. Their reactions show as
+        # pressures too, negative where they pull (at the top of a side).
+        def on_rollers(i):
+            return (abs(x[i]) < 1e-9 or abs(x[i] - 1) < 1e-9 or
+                    (abs(y[i]) < 1e-9 and x[i] > 0.5 - 1e-9))
+        verdict("normal gaps >= 0, pressures >= 0 off the rollers",
+                min(gap) >= -1e-9 and
+                all(pressure[i] >= -1e-9 for i in range(n_points)
+                    if not on_rollers(i)))
         verdict("active nodes are closed (gap 0)",
                 all(abs(gap[i]) <= 1e-9 for i in range(n_points)
                     if active[i] == 1))
-        verdict("nodes with pressure are active",
+        verdict("nodes with pressure off the rollers are active",
                 all(active[i] == 1 for i in range(n_points)
-                    if pressure[i] > 1e-6 * max(pressure)))
+                    if pressure[i] > 1e-6 * max(pressure) and
+                    not on_rollers(i)))
+        verdict("the rollers show their reactions: some roller node has a "
+                "pressure > 0, and every one a gap 0",
+                any(pressure[i] > 0 for i in range(n_points)
+                    if on_rollers(i)) and
+                all(gap[i] == 0 for i in range(n_points) if on_rollers(i)))
         # The checks above hold for all-zero fields; these do not.
         verdict("some node is active and some contact pressure is > 0",
                 active.sum() > 0 and max(pressure) > 0)

@@ -313,7 +313,7 @@ namespace unilateral::masonry
       std::array<double, dim>   held_value{};
       NormalGroups<dim>         rollers, signorini;
       std::vector<unsigned int> roller_support, signorini_support;
-      std::vector<std::size_t>  signorini_face;
+      std::vector<std::size_t>  roller_face, signorini_face;
     };
 
     /// Whether @p a and @p b differ by at most @p tolerance in every
@@ -849,6 +849,7 @@ namespace unilateral::masonry
                 {
                   c.rollers.add(faces[f].normal, c.roller_support.size());
                   c.roller_support.push_back(index);
+                  c.roller_face.push_back(f);
                 }
               else
                 {
@@ -890,6 +891,23 @@ namespace unilateral::masonry
               {static_cast<unsigned int>(node), group.mean()});
             result.roller_support.push_back(
               c.roller_support[group.items.front()]);
+            // Its weight spans the Signorini faces it takes over too (at the
+            // end of a held part of a base, half of the node's faces): the
+            // reaction there is their load as well.
+            std::set<std::size_t> roller_faces;
+            for (const std::size_t item : group.items)
+              roller_faces.insert(c.roller_face[item]);
+            const dealii::Tensor<1, dim> roller_normal =
+              as_tensor<dim>(group.mean());
+            for (const auto &signorini : c.signorini.groups)
+              if (std::abs(roller_normal * as_tensor<dim>(signorini.mean())) >
+                  1 - 1e-9)
+                for (const std::size_t item : signorini.items)
+                  roller_faces.insert(c.signorini_face[item]);
+            double weight = 0;
+            for (const std::size_t f : roller_faces)
+              weight += node_weight(f, static_cast<unsigned int>(node));
+            result.roller_weight.push_back(weight);
           }
         for (const auto &group : c.signorini.groups)
           {

@@ -586,6 +586,7 @@ namespace unilateral::masonry
     balance.support = contacts.support_names;
     balance.reaction.assign(balance.support.size(), {});
     balance.reaction_moment.assign(balance.support.size(), {});
+    balance.roller_force.assign(contacts.rollers.size(), 0.0);
     for (std::size_t k = 0; k < constraints.size(); ++k)
       {
         const auto             &c     = contacts.constraints[k];
@@ -648,6 +649,7 @@ namespace unilateral::masonry
         gram.vmult(coefficient, rhs);
         for (unsigned int i = 0; i < n_rollers; ++i)
           {
+            balance.roller_force[r + i] = coefficient[i];
             std::array<double, dim> f;
             for (unsigned int d = 0; d < dim; ++d)
               f[d] = coefficient[i] * contacts.rollers[r + i].normal[d];

@@ -251,11 +251,28 @@ namespace unilateral::masonry
              ++end)
           {
             Load &load = at[{end == 0 ? c.lower : c.upper, klass}];
-            load.force += constraints[k].contact_force;
+            // An open contact carries no force: its multiplier is the
+            // round-off of A u - b, which showed as pressures of -1e-11
+            // on the arch's open joints (a review).
+            if (constraints[k].active)
+              load.force += constraints[k].contact_force;
             load.weight = contacts.weight[k][end];
             load.gap    = std::min(load.gap, constraints[k].normal_gap);
             load.active = load.active || constraints[k].active;
           }
+      }
+    // A roller's reaction is the pressure of the support (the base of a
+    // wall where it is held, not settled; negative where it pulls), its gap
+    // zero: without it the field showed 0 under a bearing half-wall, or
+    // the pressure of a joint ending at the node (a review). The active
+    // set stays the LCP's: a roller is not one of its constraints.
+    for (std::size_t r = 0; r < contacts.rollers.size(); ++r)
+      {
+        const auto &roller = contacts.rollers[r];
+        Load &load = at[{roller.node, classes.classify(roller.normal).first}];
+        load.force -= balance.roller_force[r]; // along the outward normal
+        load.weight = contacts.roller_weight[r];
+        load.gap    = std::min(load.gap, 0.0);
       }
     const auto borrowed =
       pressures_without_weight<dim>(at, contacts, discretisation);

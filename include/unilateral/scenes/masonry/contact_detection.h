@@ -58,6 +58,9 @@ namespace unilateral::masonry
     /// Rollers, and their supports.
     std::vector<Roller<dim>>  rollers;
     std::vector<unsigned int> roller_support;
+    /// For the contact pressure at a roller: the node's weight on the
+    /// roller's faces, int phi_node over them (as `weight`).
+    std::vector<double> roller_weight;
 
     /// Signorini rows first (in DOF order), then joint rows (sorted by
     /// DOF).

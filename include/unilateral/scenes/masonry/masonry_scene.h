@@ -74,6 +74,10 @@ namespace unilateral::masonry
     std::vector<std::string>             support;
     std::vector<std::array<double, dim>> reaction;
     std::vector<std::array<double, 3>>   reaction_moment;
+    /// Per roller of the ContactSet: its reaction along the roller's
+    /// outward normal (negative where the support presses on the block),
+    /// for the contact pressure of the output.
+    std::vector<double> roller_force;
     /// |loads + reactions| / |loads| (force), the same for the moment over
     /// |loads| times the structure's size.
     double force_imbalance  = 0;
