@@ -92,7 +92,9 @@ namespace unilateral::lcp
    * The largest residual check_balance lets pass for @p u and its
    * multipliers @p lambda = A u - b: @p kkt_tolerance F plus ten times the
    * rounding error epsilon |A| |u|_inf, in force units; infinity where
-   * there is nothing to balance (no loads, no contact force). For a
+   * there is nothing to balance (no loads, no contact force) or where the
+   * forces are not resolved to @p kkt_tolerance (a floating body whose
+   * rigid motion dwarfs them; check_balance says so). For a
    * method's own stopping test, so that it does not stop at an answer this
    * check refuses (PDAS keeping a contact that pulls).
    */
