@@ -2,7 +2,9 @@
 """Two builds side by side: the same runs with an old and a new executable,
 interleaved (old, new, old, new, ...) so that the machine's drift in speed
 (up to 1.7x over a day) falls on both alike. Prints a table of wall time,
-peak memory and iterations, and saves it as CSV and Markdown.
+peak memory and iterations, and saves it as CSV and Markdown (m<M>.csv,
+m<M>.md) and plots the wall time of each run per geometry and build
+(m<M>.png).
 
   /usr/bin/python3 benchmarks/compare_builds/compare.py \\
       --old OLD/unilateral --new build/unilateral [--m 225] [--repeat 2]
@@ -101,6 +103,40 @@ def main():
               "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
+    plot(rows, arguments)
+
+
+def plot(rows, arguments):
+    """m<M>.png: wall and solve seconds of every run, old beside new."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no plot")
+        return
+    geometries = list(dict.fromkeys(row["geometry"] for row in rows))
+    figure, axis = plt.subplots(figsize=(8, 4))
+    for offset, build, colour in ((-0.2, "old", "tab:blue"),
+                                  (0.2, "new", "tab:orange")):
+        for key, marker in (("wall", "o"), ("solve", "x")):
+            points = [(geometries.index(row["geometry"]) + offset, row[key])
+                      for row in rows if row["build"] == build]
+            axis.plot([p[0] for p in points], [p[1] for p in points], marker,
+                      color=colour, linestyle="none",
+                      label=f"{build} {key}")
+    axis.set_xticks(range(len(geometries)))
+    axis.set_xticklabels(geometries)
+    axis.set_ylabel("seconds")
+    axis.set_ylim(bottom=0)
+    axis.set_title(f"old and new build, m = {arguments.m}, every run",
+                   fontsize=10)
+    axis.legend(fontsize=8)
+    figure.tight_layout()
+    path = os.path.join(arguments.output, f"m{arguments.m}.png")
+    figure.savefig(path, dpi=100)
+    plt.close(figure)
+    print(f"written: {path} (and .csv, .md)")
 
 
 if __name__ == "__main__":

@@ -1210,6 +1210,11 @@ def main():
         if case not in CASES:
             sys.exit(f"unknown case '{case}': choose from {', '.join(CASES)}")
     studies = set(s.strip() for s in arguments.studies.split(","))
+    state = os.path.join(RUNS, "state.json")
+    if arguments.plots_only and not os.path.exists(state):
+        sys.exit(f"--plots-only: no {state} (runs/ is not versioned): run "
+                 f"this script without --plots-only first (e.g. --quick "
+                 f"--output {arguments.output})")
     if not os.access(arguments.executable, os.X_OK):
         sys.exit(f"no executable {arguments.executable}: build first")
     if os.nice(0) < 10:

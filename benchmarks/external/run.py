@@ -7,7 +7,14 @@ problems), solves each with our methods and with PETSc (TAO, SNES VI), Siconos
 numerics and Ipopt, and prints one table per problem: time (solve phase and
 total), relative KKT residual (unilateral's kkt_residuals() for everyone) and
 the ratio of the solve time to our best. Results go to
-benchmarks/results/external/ (results.csv, results.md, per-run JSON).
+benchmarks/results/external/ (--output DIR elsewhere): results.csv,
+results.md, results.png (solve seconds per solver and problem), per-run JSON.
+
+The external solvers' drivers need Debian's libpetsc-real-dev,
+libsiconos-numerics-dev and coinor-libipopt-dev, which install.sh (run
+first, unless --skip-install) installs with apt-get; without them the
+drivers cannot be built and the script says so and stops (--no-external
+runs our solvers alone).
 
 Usage (from anywhere; paths are relative to the repository):
   benchmarks/external/run.py                 the full benchmark
@@ -15,7 +22,7 @@ Usage (from anywhere; paths are relative to the repository):
   benchmarks/external/run.py --only lap      problems whose name contains 'lap'
 Options: --timeout SECONDS (per external run, default 600), --skip-install,
 --skip-build, --repeats N (timed runs per solver below 5 s; the fastest
-counts; default 3).
+counts; default 3), --no-external, --output DIR.
 """
 import argparse
 import csv
@@ -129,12 +136,21 @@ def run_command(command, timeout=None, cwd=None):
         return None, time.monotonic() - start, out, err
 
 
-def install_and_build(skip_install, skip_build):
+DRIVER_PACKAGES = ("libpetsc-real-dev libsiconos-numerics-dev "
+                   "coinor-libipopt-dev")
+
+
+def install_and_build(skip_install, skip_build, no_external):
     if not skip_install:
         # The top-level install.sh with the drivers' packages added.
         script = os.path.join(HERE, "install.sh")
         log("== " + os.path.relpath(script, ROOT))
-        subprocess.run(["sh", script], check=True)
+        if subprocess.run(["sh", script]).returncode != 0:
+            sys.exit("run.py: %s failed: the drivers need the Debian "
+                     "packages %s (apt-get, as root or with sudo); install "
+                     "them, or run with --skip-install --no-external for "
+                     "our solvers alone" % (os.path.relpath(script, ROOT),
+                                            DRIVER_PACKAGES))
     if not skip_build:
         log("== building unilateral (build/) and the drivers "
             "(build-external/)")
@@ -143,11 +159,34 @@ def install_and_build(skip_install, skip_build):
                        stdout=subprocess.DEVNULL)
         subprocess.run(["cmake", "--build", BUILD, "-j2", "--target",
                         "unilateral"], check=True, stdout=subprocess.DEVNULL)
-        subprocess.run(["cmake", "-S", HERE, "-B", BUILD_EXTERNAL,
-                        "-DCMAKE_BUILD_TYPE=Release"], check=True,
-                       stdout=subprocess.DEVNULL)
-        subprocess.run(["cmake", "--build", BUILD_EXTERNAL, "-j2"],
-                       check=True, stdout=subprocess.DEVNULL)
+        if no_external:
+            return
+        for command in (["cmake", "-S", HERE, "-B", BUILD_EXTERNAL,
+                         "-DCMAKE_BUILD_TYPE=Release"],
+                        ["cmake", "--build", BUILD_EXTERNAL, "-j2"]):
+            if subprocess.run(command, stdout=subprocess.DEVNULL).returncode:
+                sys.exit("run.py: building the drivers (build-external/) "
+                         "failed: are %s installed? "
+                         "benchmarks/external/install.sh installs them; "
+                         "--no-external runs our solvers alone"
+                         % DRIVER_PACKAGES)
+
+
+def check_drivers(theirs):
+    """Stop with one clear line if a driver that will run is not built."""
+    drivers = sorted(set(
+        driver for label, driver, _, _ in THEIRS
+        if not theirs or any(part in label for part in theirs.split(","))))
+    missing = [d for d in drivers
+               if not os.access(os.path.join(BUILD_EXTERNAL, d), os.X_OK)]
+    if missing:
+        sys.exit("run.py: external solvers not available: %s missing in %s. "
+                 "They need the Debian packages %s, which "
+                 "benchmarks/external/install.sh installs (run.sh without "
+                 "--skip-install), and a build (run.sh without --skip-build);"
+                 " or run with --no-external for our solvers alone"
+                 % (", ".join(missing), os.path.relpath(BUILD_EXTERNAL, ROOT),
+                    DRIVER_PACKAGES))
 
 
 def available_scenes():
@@ -326,6 +365,7 @@ def table(name, n, n_c, results):
 
 
 def main():
+    global RESULTS
     parser = argparse.ArgumentParser(
         description=__doc__.split("\n\n")[0],
         formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -350,11 +390,17 @@ def main():
     parser.add_argument("--theirs", default="",
                         help="comma-separated substrings of the external "
                              "solvers' labels to run (default: all)")
+    parser.add_argument("--output", default=RESULTS,
+                        help="folder for the results, problems and runs "
+                             "(default benchmarks/results/external)")
     args = parser.parse_args()
+    RESULTS = os.path.abspath(args.output)
 
     # A run of the large walls alone keeps the full list's results.
     base = "walls" if args.walls else "results"
-    install_and_build(args.skip_install, args.skip_build)
+    install_and_build(args.skip_install, args.skip_build, args.no_external)
+    if not args.no_external:
+        check_drivers(args.theirs)
     scenes = available_scenes()
     os.makedirs(RESULTS, exist_ok=True)
     markdown = ["# unilateral vs established solvers", "",
@@ -366,6 +412,7 @@ def main():
                 "time / fastest of our converged methods." %
                 time.strftime("%Y-%m-%d %H:%M"), ""]
     rows = []
+    plotted = []   # (problem, results) for the plot
     for name, kind, spec in problem_list(args.quick, args.walls):
         if args.only and not any(part in name for part in args.only.split(",")):
             continue
@@ -399,6 +446,7 @@ def main():
                     fmt_time(result.get("solve")),
                     fmt_kkt(result.get("kkt"))))
                 results.append(result)
+        plotted.append((name, results))
         text = table(name, n, n_c, results)
         log("")
         log(text)
@@ -420,8 +468,55 @@ def main():
             writer.writerows(rows)
         with open(os.path.join(RESULTS, base + ".md"), "w") as f:
             f.write("\n".join(markdown) + "\n")
-    log("results: %s/%s.{csv,md}" % (os.path.relpath(RESULTS, os.getcwd()),
-                                      base))
+    plot(plotted, os.path.join(RESULTS, base + ".png"))
+    log("results: %s/%s.{csv,md,png}" % (os.path.relpath(RESULTS, os.getcwd()),
+                                          base))
+
+
+def plot(plotted, path):
+    """Solve seconds of every solver on every problem, log scale; filled:
+    KKT <= 1e-10 and converged, open: any other answer."""
+    if not plotted:
+        return
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        log("matplotlib missing: no plot")
+        return
+    solvers = list(dict.fromkeys(r["solver"] for _, results in plotted
+                                 for r in results))
+    figure, axis = plt.subplots(figsize=(max(6, 1.2 * len(plotted) + 3), 5))
+    markers = "osD^v<>ph*"
+    for index, solver in enumerate(solvers):
+        for good in (True, False):
+            points = []
+            for column, (_, results) in enumerate(plotted):
+                for r in results:
+                    if r["solver"] != solver or not r.get("solve"):
+                        continue
+                    ok = (r.get("converged", True) and r.get("kkt") is not None
+                          and r["kkt"] <= 1e-10)
+                    if ok == good:
+                        points.append((column, r["solve"]))
+            if points:
+                axis.semilogy([p[0] for p in points], [p[1] for p in points],
+                              markers[index % len(markers)],
+                              color="C%d" % (index % 10),
+                              fillstyle="full" if good else "none",
+                              linestyle="none",
+                              label=solver if good else None)
+    axis.set_xticks(range(len(plotted)))
+    axis.set_xticklabels([name for name, _ in plotted], rotation=30,
+                         ha="right", fontsize=8)
+    axis.set_ylabel("solve seconds")
+    axis.set_title("solve time per solver (open: KKT > 1e-10 or not "
+                   "converged)", fontsize=10)
+    axis.legend(fontsize=7, loc="center left", bbox_to_anchor=(1, 0.5))
+    figure.tight_layout()
+    figure.savefig(path, dpi=100)
+    plt.close(figure)
 
 
 if __name__ == "__main__":

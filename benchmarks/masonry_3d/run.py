@@ -9,10 +9,12 @@ sizes compare). Each run is one process, timed by the program (phases from
 summary.json) and by /usr/bin/time -v (wall time, peak memory). The 3D
 series grows m until a run takes more than a minute.
 
-  python3 benchmarks/masonry_3d/run.py [--build build] [--quick]
+  python3 benchmarks/masonry_3d/run.py [--build build] [--quick] [--output DIR]
 
 Prints a table, writes benchmarks/results/masonry_3d/scale.{csv,md} and
-scale.svg (time and memory against unknowns, log-log, 2D and 3D).
+scale.svg (time and memory against unknowns, log-log, 2D and 3D), the
+committed results; --quick writes them to /tmp/masonry_3d_quick instead,
+and --output DIR to DIR in either case.
 """
 import argparse
 import csv
@@ -162,7 +164,12 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
     parser.add_argument("--quick", action="store_true",
-                        help="small walls only (a check of the script)")
+                        help="small walls only (a check of the script; "
+                        "written to /tmp/masonry_3d_quick unless --output)")
+    parser.add_argument("--output", default=None,
+                        help="folder for scale.{csv,md,svg} (default: "
+                        "benchmarks/results/masonry_3d, the committed "
+                        "results; with --quick /tmp/masonry_3d_quick)")
     args = parser.parse_args()
     executable = os.path.join(args.build, "unilateral")
     series = {2: [25, 50, 100, 150], 3: [5, 10, 15, 20, 25, 30, 35, 40, 45]}
@@ -178,7 +185,9 @@ def main():
                   f"{row['peak_mb']} MB", flush=True)
             if dim == 3 and row["wall_s"] > 60:
                 break
-    results = os.path.join(ROOT, "benchmarks", "results", "masonry_3d")
+    results = args.output or (
+        os.path.join(tempfile.gettempdir(), "masonry_3d_quick") if args.quick
+        else os.path.join(ROOT, "benchmarks", "results", "masonry_3d"))
     os.makedirs(results, exist_ok=True)
     fields = ["dim", "m", "blocks", "n", "n_c", "status", "iterations",
               "factorisations"] + \
@@ -206,6 +215,7 @@ def main():
     with open(os.path.join(results, "scale.md"), "w") as f:
         f.write(text)
     svg(rows, os.path.join(results, "scale.svg"))
+    print(f"wrote scale.csv, scale.md and scale.svg to {results}")
 
 
 if __name__ == "__main__":

@@ -12,9 +12,13 @@ writes into benchmarks/results/masonry_tables/:
                   seconds (solver and end to end), peak memory, and the
                   paper's n_b, n, n_c and CPU seconds
     tables.md     Tables 1-7 as Markdown, ours beside the paper's
+    tables.png    solve seconds against m, one panel per geometry, one
+                  line per method (ours solid, the paper's dashed)
     scale.csv/md  m = 225, PDAS, PDPC and the predictor-corrector interior
                   point, all geometries, VTU on: time per
                   stage and peak memory (with --scale)
+    scale.png     their end-to-end seconds and peak memory (with --scale)
+(--output DIR writes all of these to DIR instead.)
     runs/         the parameter files and summaries of every run
 
 Options: --help (each is described there).
@@ -169,14 +173,19 @@ def main():
     parser.add_argument("--executable",
                         default=os.path.join(ROOT, "build", "unilateral"),
                         help="the unilateral executable to run")
+    parser.add_argument("--output",
+                        default=os.path.join(ROOT, "benchmarks", "results",
+                                             "masonry_tables"),
+                        help="folder for the results (default "
+                             "benchmarks/results/masonry_tables, where "
+                             "scale*.csv/md are committed)")
     arguments = parser.parse_args()
     tables = [int(t) for t in arguments.tables.split(",") if t]
     geometries = [g.strip() for g in arguments.geometries.split(",")]
     if not os.access(arguments.executable, os.X_OK):
         sys.exit(f"no executable {arguments.executable}: build first")
 
-    results_directory = os.path.join(ROOT, "benchmarks", "results",
-                                     "masonry_tables")
+    results_directory = os.path.abspath(arguments.output)
     runs_directory = os.path.join(results_directory, "runs")
     os.makedirs(runs_directory, exist_ok=True)
     sizes, seconds = read_paper()
@@ -235,6 +244,8 @@ def main():
                       f"m = {m:3}: {row['status']}, "
                       f"{row.get('solver_seconds', '-')} s "
                       f"(paper {paper_seconds or '-'})", flush=True)
+    if rows:
+        plot_tables(results_directory, rows, arguments.relative_gap)
     if arguments.scale:
         scale_rows = []
         for solver in ("pdas", "pdpc", "interior_point_pc"):
@@ -248,6 +259,86 @@ def main():
                 print(f"scale {solver} {geometry}: {result['status']}, "
                       f"{result['wall']:.1f} s, "
                       f"{result.get('peak_mb', 0) or 0:.0f} MB", flush=True)
+        plot_scale(results_directory, scale_rows, arguments.relative_gap)
+    print(f"results in {results_directory}/")
+
+
+def pyplot():
+    """matplotlib's pyplot without a display, or None if it is missing."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        return plt
+    except ImportError:
+        print("matplotlib missing: no plot")
+        return None
+
+
+def plot_tables(directory, rows, relative_gap):
+    """tables.png: solve seconds against m per geometry, one line per
+    method, ours solid (converged runs only) and the paper's dashed."""
+    plt = pyplot()
+    if plt is None:
+        return
+    figure, axes = plt.subplots(1, len(GEOMETRIES), figsize=(14, 4.5),
+                                squeeze=False)
+    for axis, geometry in zip(axes[0], GEOMETRIES):
+        for index, solver in enumerate(dict.fromkeys(r["solver"]
+                                                     for r in rows)):
+            selected = sorted((r for r in rows if r["solver"] == solver and
+                               r["geometry"] == geometry),
+                              key=lambda r: r["m"])
+            ours = [(r["m"], float(r["solver_seconds"])) for r in selected
+                    if r["status"] == "converged" and "solver_seconds" in r]
+            paper = [(r["m"], float(r["paper_seconds"])) for r in selected
+                     if r["paper_seconds"] and float(r["paper_seconds"]) > 0]
+            colour = f"C{index % 10}"
+            if ours:
+                axis.loglog(*zip(*ours), "o-", color=colour, label=solver)
+            if paper:
+                axis.loglog(*zip(*paper), "x--", color=colour,
+                            label=f"{solver} (paper)")
+        axis.set(title=geometry, xlabel="m (blocks per side)",
+                 ylabel="solve seconds")
+        axis.grid(True, which="both", alpha=0.3)
+    axes[0][0].legend(fontsize=7)
+    figure.suptitle("Ainsworth & Mihai Tables 3-7, "
+                    f"{gap_heading(relative_gap)}: ours (solid, converged) "
+                    "and the paper's (dashed)", fontsize=9)
+    figure.tight_layout()
+    figure.savefig(os.path.join(directory,
+                                f"tables{gap_tag(relative_gap)}.png"),
+                   dpi=100)
+    plt.close(figure)
+
+
+def plot_scale(directory, scale_rows, relative_gap):
+    """scale.png: end-to-end seconds and peak memory of the m = 225 runs,
+    bars per solver and geometry."""
+    plt = pyplot()
+    if plt is None or not scale_rows:
+        return
+    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
+    solvers = list(dict.fromkeys(s for s, _, _ in scale_rows))
+    width = 0.8 / max(1, len(solvers))
+    for index, solver in enumerate(solvers):
+        for axis, value in ((left, lambda r: r["wall"]),
+                            (right, lambda r: r.get("peak_mb") or 0)):
+            axis.bar([GEOMETRIES.index(g) + index * width
+                      for s, g, _ in scale_rows if s == solver],
+                     [value(r) for s, _, r in scale_rows if s == solver],
+                     width, label=solver)
+    for axis, label in ((left, "end to end seconds"), (right, "peak MB")):
+        axis.set_xticks([i + 0.4 - width / 2 for i in range(len(GEOMETRIES))])
+        axis.set_xticklabels(GEOMETRIES)
+        axis.set_ylabel(label)
+    left.legend(fontsize=8)
+    figure.suptitle(f"m = 225, {gap_heading(relative_gap)}", fontsize=9)
+    figure.tight_layout()
+    figure.savefig(os.path.join(directory,
+                                f"scale{gap_tag(relative_gap)}.png"), dpi=100)
+    plt.close(figure)
 
 
 FIELDS = ["table", "solver", "geometry", "m", "n_b", "paper_n_b", "n",

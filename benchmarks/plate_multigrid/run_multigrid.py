@@ -9,13 +9,18 @@ plate (cn, smallest and centre deflection).
 
   /usr/bin/python3 benchmarks/plate_multigrid/run_multigrid.py [--sizes 90 64 128 256 512]
       [--pdas-max 256] [--executable build/unilateral] [--baseline old/unilateral]
+      [--output DIR]
 
-PDAS above --pdas-max is not run (512 x 512: about 150 s and 12 GB).
+PDAS above --pdas-max is not run (512 x 512: about 12 GB and six minutes,
+363 s measured; see README.md).
 --baseline: TNNMG of another build too, run just before the new one on each
 mesh (so that the machine's drift falls on both alike), compared in a second
 table (baseline.csv).
-Prints the table, writes results.csv and multigrid.png here
-(--table-only: both again from results.csv).
+Prints the table, writes results.csv and multigrid.png here, the committed
+table, when --sizes are the committed table's (COMMITTED_SIZES, in any
+order); a run at other sizes writes them to --directory instead (scratch,
+default /tmp/plate_multigrid), unless --output DIR names a folder
+(--table-only: both again from the results.csv of --output, default here).
 """
 import argparse
 import csv
@@ -27,6 +32,9 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# The sizes of the committed results.csv: a run at other sizes does not
+# replace it unless --output says so.
+COMMITTED_SIZES = [90, 64, 128, 256, 512, 1024]
 
 
 def write_prm(path, n, method, directory, run_name=None):
@@ -104,17 +112,27 @@ def main():
     parser.add_argument("--directory", default="/tmp/plate_multigrid")
     parser.add_argument("--table-only", action="store_true",
                         help="the table and plot again from results.csv")
+    parser.add_argument("--output", default=None,
+                        help="folder for results.csv, baseline.csv and "
+                        "multigrid.png (default: this folder if --sizes are "
+                        "the committed table's, else --directory)")
     arguments = parser.parse_args()
+    output = arguments.output
+    if output is None:
+        output = (HERE if arguments.table_only or
+                  sorted(arguments.sizes) == sorted(COMMITTED_SIZES)
+                  else arguments.directory)
     if arguments.table_only:
-        with open(os.path.join(HERE, "results.csv")) as file:
+        with open(os.path.join(output, "results.csv")) as file:
             rows = [{k: (v if k in ("method", "status", "cycles_per_level",
                                     "iterations_per_level") else
                          float(v) if "." in v or "e" in v or v == "nan"
                          else int(v)) for k, v in row.items()}
                     for row in csv.DictReader(file)]
-        table_and_plot(rows)
+        table_and_plot(rows, output)
         return
     os.makedirs(arguments.directory, exist_ok=True)
+    os.makedirs(output, exist_ok=True)
     print("load (uptime):", os.getloadavg())
 
     rows = []
@@ -139,13 +157,17 @@ def main():
     for name, selection in [("results.csv", rows), ("baseline.csv", baseline)]:
         if not selection:
             continue
-        with open(os.path.join(HERE, name), "w", newline="") as file:
+        with open(os.path.join(output, name), "w", newline="") as file:
             writer = csv.DictWriter(file, fieldnames=list(selection[0].keys()))
             writer.writeheader()
             writer.writerows(selection)
-    table_and_plot(rows)
+    table_and_plot(rows, output)
     if baseline:
         side_by_side(baseline, rows)
+    print(f"wrote results.csv and multigrid.png to {output}"
+          + ("" if os.path.samefile(output, HERE) else
+             " (not the committed table: --sizes differ from "
+             f"{' '.join(map(str, COMMITTED_SIZES))}, or --output)"))
 
 
 def side_by_side(baseline, rows):
@@ -164,7 +186,7 @@ def side_by_side(baseline, rows):
               f"{b['cn']} / {r['cn']} |")
 
 
-def table_and_plot(rows):
+def table_and_plot(rows, output):
     print("\n|   n | unknowns | TNNMG wall | TNNMG solve | TNNMG peak |"
           " PDAS wall | PDAS solve | PDAS peak | cn TNNMG / PDAS | deflection"
           " difference | KKT TNNMG / PDAS | cycles per level (coarsest"
@@ -209,7 +231,7 @@ def table_and_plot(rows):
         right.set(xlabel="unknowns |J|", ylabel="peak memory (GB)")
         left.legend()
         figure.tight_layout()
-        figure.savefig(os.path.join(HERE, "multigrid.png"), dpi=100)
+        figure.savefig(os.path.join(output, "multigrid.png"), dpi=100)
     except ImportError:
         print("matplotlib missing: no plot")
 

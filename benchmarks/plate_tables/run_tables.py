@@ -7,8 +7,10 @@ For every row of plate_contact.csv it writes a parameter file, runs the
 unilateral executable with each method (interior_point, block_pivoting,
 pdas by default), reads summary.json and reports our |J|, |J1|, cn,
 iterations and seconds next to the paper's. Results go to
-benchmarks/results/plate_tables/ (git-ignored): plate_tables.csv,
-plate_tables.md, convergence.csv, large.md and the runs themselves.
+benchmarks/results/plate_tables/ (git-ignored; --results DIR elsewhere):
+plate_tables.csv, plate_tables.md, plate_tables.png (seconds against |J|
+per method, one panel per table, ours and the paper's), convergence.csv,
+large.md and the runs themselves.
 
 Usage (from the repository root):
   /usr/bin/python3 benchmarks/plate_tables/run_tables.py \
@@ -315,6 +317,62 @@ def write_table_files(records, methods, results):
                      for r in records)
         md.write(f"- |J| and |J1| equal the paper's in {counts} of {total} "
                  "rows.\n")
+    plot_tables(records, methods, results)
+
+
+def plot_tables(records, methods, results):
+    """plate_tables.png: solve seconds against |J|, one panel per table,
+    each method's runs (filled: converged, open: not) and the paper's
+    interior point and block pivoting (crosses)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no plot")
+        return
+    tables = list(dict.fromkeys(r["table"] for r in records))
+    if not tables:
+        return
+    columns = min(3, len(tables))
+    rows_of_panels = (len(tables) + columns - 1) // columns
+    figure, axes = plt.subplots(rows_of_panels, columns,
+                                figsize=(4.5 * columns, 3.8 * rows_of_panels),
+                                squeeze=False)
+    for axis, table in zip(axes.flat, tables):
+        selected = [r for r in records if r["table"] == table]
+        for index, m in enumerate(methods):
+            colour = f"C{index % 10}"
+            for converged in (True, False):
+                points = [(r[m]["n_free"], solver_seconds(r[m]))
+                          for r in selected
+                          if (r[m]["status"] == "converged") == converged]
+                if points:
+                    axis.loglog(*zip(*points), "o", color=colour,
+                                fillstyle="full" if converged else "none",
+                                label=SHORT.get(m, m) if converged else None)
+        for index, (label, column) in enumerate((("ip (paper)", "ip_cpu"),
+                                                 ("bp (paper)", "bp_cpu"))):
+            points = []
+            for r in selected:
+                try:
+                    seconds = float(r["paper"][column])
+                except (TypeError, ValueError):
+                    continue
+                if seconds > 0:
+                    points.append((r[methods[0]]["n_free"], seconds))
+            if points:
+                axis.loglog(*zip(*points), "x", color=f"C{7 + index}",
+                            label=label)
+        axis.set(title=f"Table {table}", xlabel="|J| (unknowns)",
+                 ylabel="solve seconds")
+        axis.grid(True, which="both", alpha=0.3)
+    for axis in list(axes.flat)[len(tables):]:
+        axis.set_visible(False)
+    axes[0][0].legend(fontsize=7)
+    figure.tight_layout()
+    figure.savefig(os.path.join(results, "plate_tables.png"), dpi=100)
+    plt.close(figure)
 
 
 def centre_spread(record, methods):

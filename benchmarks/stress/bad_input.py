@@ -14,13 +14,17 @@ executable in a folder of its own and is judged:
          answer (reported as converged, or an exact one reported as not)
 
 Writes a Markdown table (case, the first line of stderr or the note, exit
-code, verdict) to benchmarks/results/stress/bad_input.md and prints it. The
-cases of issue 21 are marked "(issue)". Standard library only.
+code, verdict) to benchmarks/results/stress/bad_input.md and prints it; the
+same rows go to bad_input.csv beside it, and the verdict counts per scene to
+bad_input.png (stacked bars; skipped if matplotlib is missing). --output
+FILE.md puts all three elsewhere (FILE.csv, FILE.png). The cases of issue 21
+are marked "(issue)". Standard library only, but for the plot.
 
-    /usr/bin/python3 benchmarks/stress/bad_input.py [build/unilateral]
+    /usr/bin/python3 benchmarks/stress/bad_input.py [build/unilateral] [--output FILE.md]
 """
 
 import argparse
+import csv
 import json
 import math
 import os
@@ -787,10 +791,47 @@ def main():
                 exist_ok=True)
     with open(arguments.output, "w") as file:
         file.write(text)
+    base = os.path.splitext(arguments.output)[0]
+    with open(base + ".csv", "w", newline="") as file:
+        writer = csv.writer(file)
+        writer.writerow(["number", "scene", "case", "message_or_note",
+                         "exit", "verdict"])
+        writer.writerows(rows)
+    plot_verdicts(base + ".png", rows, commit)
     print()
     print(text)
-    print(f"written to {arguments.output}")
+    print(f"written to {arguments.output}, {base}.csv and {base}.png")
     return 1 if counts["WRONG"] else 0
+
+
+def plot_verdicts(path, rows, commit):
+    """The verdict counts per scene, stacked bars (matplotlib optional)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no plot")
+        return
+    scenes = list(dict.fromkeys(row[1] for row in rows))
+    figure, axis = plt.subplots(figsize=(7, 0.45 * len(scenes) + 1.5))
+    left = [0] * len(scenes)
+    for verdict, colour in (("OK", "tab:green"), ("WEAK", "tab:orange"),
+                            ("WRONG", "tab:red")):
+        counts = [sum(1 for row in rows if row[1] == scene and
+                      row[5] == verdict) for scene in scenes]
+        if any(counts):
+            axis.barh(scenes, counts, left=left, color=colour,
+                      label=f"{verdict} ({sum(counts)})")
+            left = [a + b for a, b in zip(left, counts)]
+    axis.invert_yaxis()
+    axis.set_xlabel("cases")
+    axis.set_title(f"bad and edge input at {commit}: {len(rows)} cases by "
+                   "verdict", fontsize=10)
+    axis.legend(fontsize=8, loc="lower right")
+    figure.tight_layout()
+    figure.savefig(path, dpi=100)
+    plt.close(figure)
 
 
 if __name__ == "__main__":

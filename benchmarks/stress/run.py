@@ -39,8 +39,9 @@ summary.json is read and the run gets one verdict:
 Compared: the energy (relative 1e-8) and the displacement quantity
 (masonry max_displacement, plate min_deflection and centre_deflection;
 relative 1e-6 of the reference's size). Writes
-benchmarks/results/stress/stress.csv, stress.md and runs/ (every parameter
-file and summary).
+benchmarks/results/stress/stress.csv, stress.md, stress.png (the verdict
+counts per family, stacked bars; needs matplotlib, skipped without it) and
+runs/ (every parameter file and summary).
 
 Options: --quick, --large (only the large-mesh cases, written to
 benchmarks/results/stress/large/), --with-large (full and large), --only
@@ -686,6 +687,41 @@ def write_results(directory, rows, mode, elapsed):
         lines.append("")
     with open(os.path.join(directory, "stress.md"), "w") as f:
         f.write("\n".join(lines))
+    plot_verdicts(directory, rows)
+
+
+VERDICT_COLOURS = {"PASS": "tab:green", "HONEST-FAIL": "tab:orange",
+                   "WRONG": "tab:red", "ERROR": "tab:purple",
+                   "NO-REF": "tab:gray"}
+
+
+def plot_verdicts(directory, rows):
+    """stress.png: runs per family, stacked by verdict (matplotlib is
+    optional: the script needs only the standard library)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no stress.png")
+        return
+    families = list(dict.fromkeys(r["family"] for r in rows))
+    figure, axis = plt.subplots(figsize=(8, 0.4 * len(families) + 1.5))
+    left = [0] * len(families)
+    for verdict, colour in VERDICT_COLOURS.items():
+        counts = [sum(1 for r in rows if r["family"] == family and
+                      r["verdict"] == verdict) for family in families]
+        if any(counts):
+            axis.barh(families, counts, left=left, color=colour,
+                      label=f"{verdict} ({sum(counts)})")
+            left = [a + b for a, b in zip(left, counts)]
+    axis.invert_yaxis()
+    axis.set_xlabel("runs")
+    axis.set_title(f"stress test: {len(rows)} runs by verdict", fontsize=10)
+    axis.legend(fontsize=8, loc="lower right")
+    figure.tight_layout()
+    figure.savefig(os.path.join(directory, "stress.png"), dpi=100)
+    plt.close(figure)
 
 
 def main():
@@ -843,7 +879,8 @@ def main():
                   f"[{row['solver']}]: {row['reason']}")
     print(f"{len(rows)} cases in {elapsed:.0f} s: " +
           ", ".join(f"{v} {n}" for v, n in sorted(counts.items())))
-    print(f"results in {arguments.output}/stress.csv and stress.md")
+    print(f"results in {arguments.output}/stress.csv, stress.md and "
+          "stress.png")
     return 1 if counts.get("WRONG") or counts.get("ERROR") else 0
 
 
