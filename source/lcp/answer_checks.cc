@@ -258,36 +258,18 @@ namespace unilateral::lcp
     // Where A is definite no rigid motion hides in |A| |u|: its size
     // against the forces is the conditioning (the plate's grows like
     // h^-4), and the answer is as good as double precision makes it.
-    // The loads' balance too: a contact force larger than all the loads
-    // together (a keystone wedged in a notch whose sides lean by 3e-6, its
-    // thrust 1e5 times its weight) is resolved to `resolution` of itself,
-    // and the loads only to that much of it. A review's such arch ended
-    // 'converged' with its thrust 1.7e-4 off the statics. The sum of the
-    // loads, not the largest: a node's load shrinks with the mesh faster
-    // than a contact force does (a block of 64 x 64 cells: 192 times).
-    const double loads = problem.b.lpNorm<1>();
-    const double load_resolution =
-      loads > 0 && loads < forces ? resolution * forces / loads : resolution;
-    if (load_resolution > kkt_tolerance && !problem.definite)
-      {
-        message << "the answer cannot be checked to 'Solver/KKT tolerance' = "
-                << kkt_tolerance
-                << " in double precision: its displacements are mostly rigid "
-                   "motions, "
-                << scale.rigid_ratio
-                << " times the elastic ones the forces cause, so its forces "
-                   "and energy are resolved only to "
-                << resolution << " of their size";
-        if (load_resolution > resolution)
-          message << ", and the contact forces, up to " << forces / loads
-                  << " times all the loads together, balance them only to "
-                  << load_resolution
-                  << " of them (a structure near a mechanism: joints nearly "
-                     "parallel to the motion they hold?)";
-        message << "; give the loads, the stiffness and the gaps in units "
-                   "closer to each other, or accept that accuracy with a "
-                   "larger 'KKT tolerance'";
-      }
+    if (resolution > kkt_tolerance && !problem.definite)
+      message << "the answer cannot be checked to 'Solver/KKT tolerance' = "
+              << kkt_tolerance
+              << " in double precision: its displacements are mostly rigid "
+                 "motions, "
+              << scale.rigid_ratio
+              << " times the elastic ones the forces cause, so its forces "
+                 "and energy are resolved only to "
+              << resolution
+              << " of their size; give the loads, the stiffness and the "
+                 "gaps in units closer to each other, or accept that "
+                 "accuracy with a larger 'KKT tolerance'";
     else if (residual > allowance(scale, kkt_tolerance))
       message << "the forces of the answer do not balance the loads: the "
                  "residual is "

@@ -190,12 +190,11 @@ namespace unilateral::lcp
                      " is held by no support and no neighbour in some "
                      "direction, so a rigid motion of it is free and the "
                      "problem has no unique solution; TFETI needs every "
-                     "rigid motion held, and cannot tell whether the "
-                     "load drives it (then the structure has no "
-                     "equilibrium) or not (a block that may slide "
-                     "unloaded on frictionless joints: the problem has "
-                     "solutions); a method that does not tear the problem "
-                     "(pdas) finds an answer or proves that there is none";
+                     "rigid motion held: where the load drives it, the "
+                     "structure has no equilibrium; where it does not (a "
+                     "block that may slide unloaded on frictionless "
+                     "joints), the problem has solutions; pdas, which "
+                     "does not tear the problem, tells the two apart";
           }
       }
     // Also where the load does not drive that motion (a 3D wall whose

@@ -209,8 +209,11 @@ namespace unilateral::plate
         active[i] = 1;
       for (std::size_t k = 0; k < bound_vertex.size(); ++k)
         {
-          const lcp::Index i                 = lcp_problem.constrained[k];
-          force_at_vertex[bound_vertex[k]]   = lcp_solution.lambda[i] * unit;
+          const lcp::Index i = lcp_problem.constrained[k];
+          // An open node carries no force: its multiplier is the round-off
+          // of A u - b (1e-13 kg, a review), as in the masonry output.
+          force_at_vertex[bound_vertex[k]] =
+            active[i] ? lcp_solution.lambda[i] * unit : 0.0;
           contact_at_vertex[bound_vertex[k]] = active[i];
         }
     }
