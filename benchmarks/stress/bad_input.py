@@ -35,6 +35,8 @@ import sys
 import tempfile
 import time
 
+from verdict_plot import stacked_verdict_bars
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
@@ -805,33 +807,12 @@ def main():
 
 
 def plot_verdicts(path, rows, commit):
-    """The verdict counts per scene, stacked bars (matplotlib optional)."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no plot")
-        return
-    scenes = list(dict.fromkeys(row[1] for row in rows))
-    figure, axis = plt.subplots(figsize=(7, 0.45 * len(scenes) + 1.5))
-    left = [0] * len(scenes)
-    for verdict, colour in (("OK", "tab:green"), ("WEAK", "tab:orange"),
-                            ("WRONG", "tab:red")):
-        counts = [sum(1 for row in rows if row[1] == scene and
-                      row[5] == verdict) for scene in scenes]
-        if any(counts):
-            axis.barh(scenes, counts, left=left, color=colour,
-                      label=f"{verdict} ({sum(counts)})")
-            left = [a + b for a, b in zip(left, counts)]
-    axis.invert_yaxis()
-    axis.set_xlabel("cases")
-    axis.set_title(f"bad and edge input at {commit}: {len(rows)} cases by "
-                   "verdict", fontsize=10)
-    axis.legend(fontsize=8, loc="lower right")
-    figure.tight_layout()
-    figure.savefig(path, dpi=100)
-    plt.close(figure)
+    """The verdict counts per scene, stacked bars."""
+    stacked_verdict_bars(path, [(row[1], row[5]) for row in rows],
+                         {"OK": "tab:green", "WEAK": "tab:orange",
+                          "WRONG": "tab:red"}, "cases",
+                         f"bad and edge input at {commit}: {len(rows)} "
+                         "cases by verdict")
 
 
 if __name__ == "__main__":

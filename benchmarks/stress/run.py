@@ -60,6 +60,8 @@ import subprocess
 import sys
 import time
 
+from verdict_plot import stacked_verdict_bars
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
@@ -696,32 +698,11 @@ VERDICT_COLOURS = {"PASS": "tab:green", "HONEST-FAIL": "tab:orange",
 
 
 def plot_verdicts(directory, rows):
-    """stress.png: runs per family, stacked by verdict (matplotlib is
-    optional: the script needs only the standard library)."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no stress.png")
-        return
-    families = list(dict.fromkeys(r["family"] for r in rows))
-    figure, axis = plt.subplots(figsize=(8, 0.4 * len(families) + 1.5))
-    left = [0] * len(families)
-    for verdict, colour in VERDICT_COLOURS.items():
-        counts = [sum(1 for r in rows if r["family"] == family and
-                      r["verdict"] == verdict) for family in families]
-        if any(counts):
-            axis.barh(families, counts, left=left, color=colour,
-                      label=f"{verdict} ({sum(counts)})")
-            left = [a + b for a, b in zip(left, counts)]
-    axis.invert_yaxis()
-    axis.set_xlabel("runs")
-    axis.set_title(f"stress test: {len(rows)} runs by verdict", fontsize=10)
-    axis.legend(fontsize=8, loc="lower right")
-    figure.tight_layout()
-    figure.savefig(os.path.join(directory, "stress.png"), dpi=100)
-    plt.close(figure)
+    """stress.png: runs per family, stacked by verdict."""
+    stacked_verdict_bars(os.path.join(directory, "stress.png"),
+                         [(r["family"], r["verdict"]) for r in rows],
+                         VERDICT_COLOURS, "runs",
+                         f"stress test: {len(rows)} runs by verdict")
 
 
 def main():
