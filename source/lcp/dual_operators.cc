@@ -193,8 +193,8 @@ namespace unilateral::lcp
                      "rigid motion held: where the load drives it, the "
                      "structure has no equilibrium; where it does not (a "
                      "block that may slide unloaded on frictionless "
-                     "joints), the problem has solutions; pdas, which "
-                     "does not tear the problem, tells the two apart";
+                     "joints), the problem has solutions; solve it with "
+                     "pdas, which does not tear the problem";
           }
       }
     // Also where the load does not drive that motion (a 3D wall whose

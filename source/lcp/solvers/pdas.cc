@@ -130,7 +130,7 @@ namespace unilateral::lcp
      * sides on round-off, and PDAS never stops. A free index below its bound
      * by more than the slack's own rounding error becomes active: the
      * tolerance of the multiplier's term must not let an infeasible u pass.
-     * Nor a pulling contact (BalanceLimit): an active index whose multiplier
+     * Nor a pulling contact (balance_limit): an active index whose multiplier
      * is negative beyond what the driver's balance check allows is freed
      * whatever the rounding tolerance says, when nothing else changes. Where
      * |A| |u| is far larger than the forces (a plate of elements 2000 times
@@ -195,17 +195,17 @@ namespace unilateral::lcp
             else if (active[i] && lambda[i] < -least_allowance)
               pulling.push_back(i);
           }
-        return BalanceLimit(u, lambda, pulling, result);
+        return balance_limit(u, lambda, pulling, result);
       }
 
     private:
       /// @p result with the @p pulling active indices added whose
       /// multiplier the driver's balance check would refuse.
       std::vector<Index>
-      BalanceLimit(const Vector             &u,
-                   const Vector             &lambda,
-                   const std::vector<Index> &pulling,
-                   std::vector<Index>        result) const
+      balance_limit(const Vector             &u,
+                    const Vector             &lambda,
+                    const std::vector<Index> &pulling,
+                    std::vector<Index>        result) const
       {
         // Only where PDAS would otherwise stop: earlier, the multipliers of
         // an active set still changing are not the answer's.
@@ -779,7 +779,7 @@ namespace unilateral::lcp
       const bool            safeguards_on;
       /// At the default iteration limit PDAS stops as cycling (CyclingStop).
       const bool stop_as_cycling;
-      /// 'Solver/KKT tolerance', which the active-set test's BalanceLimit
+      /// 'Solver/KKT tolerance', which the active-set test's balance_limit
       /// applies.
       const double      kkt_tolerance;
       Report           &report;

@@ -900,9 +900,9 @@ namespace unilateral::masonry
              structure + " is not held against every rigid motion" + unused +
              "; the loads do no measurable work along such a motion, so " +
              "they do not fix the displacement along it: hold it by a "
-             "support, or solve with pdas (the default) and "
-             "'Solver/Regularisation = auto' (the default), which picks "
-             "one of the answers (" +
+             "support, or solve with 'Solver/Regularisation = auto' (the "
+             "default), with which pdas (the default method) picks one of "
+             "the answers (" +
              report.message + ")";
     if (report.status == lcp::Status::singular)
       return "the solver found no configuration in which every block is "
