@@ -274,6 +274,10 @@ namespace unilateral::masonry
           << " acts on no node"
           << why_acting_nowhere(support, parameters.boundary.signorini_fraction)
           << std::endl;
+    if (context.out != nullptr)
+      for (const std::string &line : contacts.nearly_touching)
+        *context.out << "  " << registered_name << ": note: " << line
+                     << std::endl;
     state->change = std::make_unique<ChangeOfVariables<dim>>(
       problem_sizes.n_dofs,
       contacts.node_dofs,
@@ -862,8 +866,13 @@ namespace unilateral::masonry
     // A support that acts nowhere is the likeliest cause of both.
     std::string nowhere;
     if (state)
-      for (const std::string &support : state->contacts.supports_acting_nowhere)
-        nowhere += "; " + support + " acts on no node";
+      {
+        for (const std::string &support :
+             state->contacts.supports_acting_nowhere)
+          nowhere += "; " + support + " acts on no node";
+        for (const std::string &line : state->contacts.nearly_touching)
+          nowhere += "; " + line;
+      }
     // The scene's own proof names the motion; other groups that can move
     // follow it.
     if (proved_before_solving(report))

@@ -86,6 +86,11 @@ namespace unilateral::masonry
     /// of their boundary (a mistyped region, or one the wall's size leaves
     /// empty), by their descriptions: the scene notes them.
     std::vector<std::string> supports_acting_nowhere;
+    /// Faces of two blocks parallel, opposite and overlapping, at a
+    /// distance beyond the refusal band (1e-2 of the smallest cell) but
+    /// within 4e-2 of it: no joint, which a drawing meant as touching did
+    /// not intend. One line per pair of blocks, for notes.
+    std::vector<std::string> nearly_touching;
 
     unsigned int n_held_dofs        = 0;
     unsigned int n_rollers          = 0;
