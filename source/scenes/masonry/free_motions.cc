@@ -81,8 +81,7 @@ namespace unilateral::masonry
         }
     }
 
-    /// The row of a support acting along @p normal at @p p: n . u for the
-    /// rigid motion (t, w): n . t + w . ((p - centre) x n) / size.
+    /// The row of a support acting along @p normal at @p p (rigid_row).
     template <int dim>
     RigidVector<dim>
     support_row(const std::array<double, dim> &normal,
@@ -90,22 +89,8 @@ namespace unilateral::masonry
                 const std::array<double, dim> &centre,
                 const double                   size)
     {
-      RigidVector<dim>        row;
-      std::array<double, dim> d{};
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          row[c] = normal[c];
-          d[c]   = (p[c] - centre[c]) / size;
-        }
-      if constexpr (dim == 2)
-        row[2] = d[0] * normal[1] - d[1] * normal[0];
-      else
-        {
-          row[3] = d[1] * normal[2] - d[2] * normal[1];
-          row[4] = d[2] * normal[0] - d[0] * normal[2];
-          row[5] = d[0] * normal[1] - d[1] * normal[0];
-        }
-      return row;
+      const auto row = rigid_row<dim>(normal, p, centre, size);
+      return Eigen::Map<const RigidVector<dim>>(row.data());
     }
 
     /**
@@ -205,32 +190,15 @@ namespace unilateral::masonry
       return std::sqrt(sum);
     }
 
-    /// The displacement at @p p of the rigid motion (t, w) of a group:
-    /// t + (w / size) x (p - centre), the motion support_row() measures.
+    /// The displacement at @p p of the rigid motion (t, w) of a group
+    /// (rigid_displacement), the motion support_row() measures.
     template <int dim>
     std::array<double, dim>
     motion_at(const RigidVector<dim>        &v,
               const std::array<double, dim> &p,
               const Group<dim>              &g)
     {
-      std::array<double, dim> u{}, d{};
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          u[c] = v[c];
-          d[c] = (p[c] - g.centre[c]) / std::max(g.size, 1e-300);
-        }
-      if constexpr (dim == 2)
-        {
-          u[0] -= v[2] * d[1];
-          u[1] += v[2] * d[0];
-        }
-      else
-        {
-          u[0] += v[4] * d[2] - v[5] * d[1];
-          u[1] += v[5] * d[0] - v[3] * d[2];
-          u[2] += v[3] * d[1] - v[4] * d[0];
-        }
-      return u;
+      return rigid_displacement<dim>(v.data(), p, g.centre, g.size);
     }
 
     /**

@@ -80,21 +80,14 @@ namespace unilateral::masonry
                            const unsigned int             node,
                            const std::array<double, dim> &n,
                            const double                   sign) {
-        const unsigned int      b = contacts.node_block[node];
-        const double            size = std::max(frames.size[b], 1e-300);
-        std::array<double, dim> r;
-        for (unsigned int d = 0; d < dim; ++d)
-          r[d] = (contacts.node_position[node][d] - frames.centre[b][d]) / size;
-        auto &a = c.coefficients[c.n_parts];
-        for (unsigned int d = 0; d < dim; ++d)
-          a[d] = sign * n[d];
-        // n . (w x r) = w . (r x n); in 2D w = w e_z.
-        if constexpr (dim == 2)
-          a[2] = sign * (r[0] * n[1] - r[1] * n[0]);
-        else
-          for (unsigned int j = 0; j < 3; ++j)
-            a[3 + j] = sign * (r[(j + 1) % 3] * n[(j + 2) % 3] -
-                               r[(j + 2) % 3] * n[(j + 1) % 3]);
+        const unsigned int b = contacts.node_block[node];
+        auto              &a = c.coefficients[c.n_parts];
+        a                    = rigid_row<dim>(n,
+                           contacts.node_position[node],
+                           frames.centre[b],
+                           frames.size[b]);
+        for (double &entry : a)
+          entry *= sign;
         c.block[c.n_parts++] = b;
       };
       for (const HeldNode<dim> &h : contacts.held)
@@ -206,33 +199,6 @@ namespace unilateral::masonry
       return held;
     }
 
-    /// u at @p x of block @p b under its rigid motion @p v (its columns).
-    template <int dim>
-    std::array<double, dim>
-    displacement_at(const BlockFrames<dim>        &frames,
-                    const unsigned int             b,
-                    const double                  *v,
-                    const std::array<double, dim> &x)
-    {
-      std::array<double, dim> r, u;
-      const double            size = std::max(frames.size[b], 1e-300);
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          r[d] = (x[d] - frames.centre[b][d]) / size;
-          u[d] = v[d];
-        }
-      if constexpr (dim == 2)
-        {
-          u[0] -= v[2] * r[1];
-          u[1] += v[2] * r[0];
-        }
-      else
-        for (unsigned int d = 0; d < 3; ++d)
-          u[d] += v[3 + (d + 1) % 3] * r[(d + 2) % 3] -
-                  v[3 + (d + 2) % 3] * r[(d + 1) % 3];
-      return u;
-    }
-
     /**
      * Whether @p motion moves the blocks of every closed joint as one body
      * (the same displacement of both nodes, not only along the normal): a
@@ -255,10 +221,10 @@ namespace unilateral::masonry
             for (unsigned int p = 0; p < 2; ++p)
               if (!held[c.block[p]])
                 u[p] =
-                  displacement_at<dim>(frames,
-                                       c.block[p],
-                                       motion.data() + column_of[c.block[p]],
-                                       c.position);
+                  rigid_displacement<dim>(motion.data() + column_of[c.block[p]],
+                                          c.position,
+                                          frames.centre[c.block[p]],
+                                          frames.size[c.block[p]]);
             for (unsigned int d = 0; d < dim; ++d)
               if (std::abs(u[0][d] - u[1][d]) > 1e-6 * scale)
                 return false;

@@ -2,6 +2,8 @@
 
 #include <unilateral/scenes/masonry/contact_detection.h>
 
+#include <algorithm>
+#include <array>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -14,6 +16,66 @@ namespace unilateral::masonry
   n_rigid_motions(const int dim)
   {
     return dim == 2 ? 3 : 6;
+  }
+
+  /**
+   * A rigid motion v of a body written about its @p centre, its rotation
+   * scaled by the body's @p size (every column of one scale): dim
+   * translations t, then the rotation w (w e_z in 2D). Its displacement at
+   * @p p: t + (w / size) x (p - centre).
+   */
+  template <int dim>
+  std::array<double, dim>
+  rigid_displacement(const double                  *v,
+                     const std::array<double, dim> &p,
+                     const std::array<double, dim> &centre,
+                     const double                   size)
+  {
+    std::array<double, dim> u{}, d{};
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        u[c] = v[c];
+        d[c] = (p[c] - centre[c]) / std::max(size, 1e-300);
+      }
+    if constexpr (dim == 2)
+      {
+        u[0] -= v[2] * d[1];
+        u[1] += v[2] * d[0];
+      }
+    else
+      {
+        u[0] += v[4] * d[2] - v[5] * d[1];
+        u[1] += v[5] * d[0] - v[3] * d[2];
+        u[2] += v[3] * d[1] - v[4] * d[0];
+      }
+    return u;
+  }
+
+  /// The row of @p normal . u at @p p over that motion's components:
+  /// n . t + w . ((p - centre) x n) / size.
+  template <int dim>
+  std::array<double, n_rigid_motions(dim)>
+  rigid_row(const std::array<double, dim> &normal,
+            const std::array<double, dim> &p,
+            const std::array<double, dim> &centre,
+            const double                   size)
+  {
+    std::array<double, n_rigid_motions(dim)> row{};
+    std::array<double, dim>                  d{};
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        row[c] = normal[c];
+        d[c]   = (p[c] - centre[c]) / std::max(size, 1e-300);
+      }
+    if constexpr (dim == 2)
+      row[2] = d[0] * normal[1] - d[1] * normal[0];
+    else
+      {
+        row[3] = d[1] * normal[2] - d[2] * normal[1];
+        row[4] = d[2] * normal[0] - d[0] * normal[2];
+        row[5] = d[0] * normal[1] - d[1] * normal[0];
+      }
+    return row;
   }
 
   /// The number of blocks (their indices run from 0); 0 without nodes.
