@@ -1,8 +1,10 @@
 #include <unilateral/base/prefixed_lines.h>
+#include <unilateral/lcp/answer_checks.h>
 #include <unilateral/lcp/projection.h>
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -177,6 +179,58 @@ namespace unilateral::lcp
       result.message = message.str();
       return result;
     }
+
+    /**
+     * Where the projection onto A fails, A is singular on the answer's free
+     * set or PDAS does not settle on it: finish by the proximal point method
+     * instead, with the eps the @p approximate answer was computed with
+     * (@p first_eps), so that its first problem lies next to that answer.
+     * That fails where the approximate answer is far from A's: a method
+     * whose own regularisation is large (PSOR, MPRGP: 1e-2 d) on a body
+     * free to slide unloaded, whose elastic deflection the regularisation
+     * held back; the first steps move by more than the answer's size and
+     * look like a runaway. There @p last_stage, the answer of the last
+     * continuation stage (on A + eps d I, eps down to 1e-14 ... 1e-11 d),
+     * may already solve the LCP on A (its free motions unloaded, at no cost
+     * to the residuals); it is taken if it passes the checks, and the final
+     * judgement checks it like any answer. On success @p solution is the
+     * answer; the iterations and counters go to @p report.
+     */
+    Report
+    finish_without_projection(const Problem          &problem,
+                              const SolverParameters &parameters,
+                              const double            first_eps,
+                              const double            last_eps,
+                              Solution                approximate,
+                              std::optional<Vector>   last_stage,
+                              Solution               &solution,
+                              Report                 &report,
+                              std::ostream           *progress)
+    {
+      const Report proximal = proximal_point(problem,
+                                             parameters,
+                                             first_eps,
+                                             last_eps,
+                                             parameters.kkt_tolerance,
+                                             approximate,
+                                             progress);
+      report.projection_iterations += proximal.iterations;
+      report.counters += proximal.counters;
+      if (proximal.converged())
+        solution = std::move(approximate);
+      else if (last_stage.has_value() &&
+               passes_checks(problem, parameters.kkt_tolerance, *last_stage))
+        {
+          if (progress != nullptr)
+            *progress << "    projection: the last continuation stage's "
+                         "answer solves the problem on A ("
+                      << proximal.message << ")" << std::endl;
+          solution   = Solution();
+          solution.u = std::move(*last_stage);
+          return Report(); // converged
+        }
+      return proximal;
+    }
   } // namespace
 
   void
@@ -215,6 +269,9 @@ namespace unilateral::lcp
     std::shared_ptr<const ActiveSetFactor> nearby = std::move(start.factor);
     const Solution                         approximate = start;
     Report                                 projection;
+    // The answer of the last continuation stage that converged (on A + eps
+    // d I with the smallest eps reached), for the end of the finish below.
+    std::optional<Vector> last_stage;
     for (;;)
       {
         const bool stage_left = eps_k * 1e-3 >= last_eps;
@@ -257,32 +314,25 @@ namespace unilateral::lcp
             projection = stage;
             break;
           }
+        last_stage = start.u;
       }
-    // Where the projection onto A fails, A is singular on the answer's
-    // free set or PDAS does not settle on it: finish by the proximal point
-    // method instead, with the eps the approximate answer was computed
-    // with, so that its first problem lies next to that answer. Not where
-    // the projection proved that there is no answer.
+    // Not where the projection proved that there is no answer.
     std::string proximal_failure;
     if (!projection.converged() && projection.status != Status::infeasible)
       {
-        Solution     finish   = approximate;
-        const Report proximal = proximal_point(problem,
-                                               parameters,
-                                               first_eps,
-                                               last_eps,
-                                               parameters.kkt_tolerance,
-                                               finish,
-                                               progress);
-        report.projection_iterations += proximal.iterations;
-        report.counters += proximal.counters;
-        if (proximal.converged())
-          {
-            projection = proximal;
-            solution   = std::move(finish);
-          }
+        const Report finish = finish_without_projection(problem,
+                                                        parameters,
+                                                        first_eps,
+                                                        last_eps,
+                                                        approximate,
+                                                        std::move(last_stage),
+                                                        solution,
+                                                        report,
+                                                        progress);
+        if (finish.converged())
+          projection = finish;
         else
-          proximal_failure = "; the proximal point finish: " + proximal.message;
+          proximal_failure = "; the proximal point finish: " + finish.message;
       }
     report.projected = true;
     if (!projection.converged())

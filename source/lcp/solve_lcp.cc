@@ -608,6 +608,22 @@ namespace unilateral::lcp
       report.add_times(reduced_report);
       PhaseTimer timer(report, "recover u_E");
       solution.u = schur->recover(reduced_solution.u);
+      // A failure of the reduced problem is judged on the full one: where
+      // A_EE holds all of A's rank, M and q are round-off, and PDAS's proof
+      // that the reduced LCP has no solution was a proof about round-off
+      // (a review: 'infeasible' for LCPs with solutions, whose recovered u
+      // was the answer). The final judgement checks it like any answer.
+      if (!report.converged() &&
+          passes_checks(problem, parameters.kkt_tolerance, solution.u))
+        {
+          if (progress != nullptr)
+            *progress << "    the reduced problem's " << report.message
+                      << "; but u recovered from its last iterate solves the "
+                         "full LCP"
+                      << std::endl;
+          report.status = Status::converged;
+          report.message.clear();
+        }
       return report;
     }
 

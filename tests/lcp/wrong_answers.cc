@@ -182,6 +182,45 @@ main()
                  });
   }
 
+  // 7. Two uncoupled parts loaded 1e8 and 1e-6 (a review): A = [[1, 1], [1,
+  // 1 + 1e-6]] + [1e8], b = A (1, -1, 1), u_1 >= 0: the contact is open by
+  // 1. Block pivoting and LSSNN held it at 0, pulling with all of its
+  // part's load, and passed: the relative residual of that pull against
+  // the other part's load was 5e-11.
+  {
+    DenseMatrix A = DenseMatrix::Zero(3, 3);
+    A << 1, 1, 0, 1, 1 + 1e-6, 0, 0, 0, 1e8;
+    const Vector expected{{1.0, -1.0, 1.0}};
+    every_method("a lightly loaded part beside a heavily loaded one: "
+                 "converged only with its contact open",
+                 make_problem(A, A * expected, {0}, {0.0}),
+                 [&](const Report &report, const Vector &u) {
+                   return !report.converged() ||
+                          (u - expected).lpNorm<Eigen::Infinity>() <= 1e-6;
+                 });
+  }
+
+  // 8. A semidefinite LCP of rank 2 with many solutions (a review's; every
+  // solution's energy by enumeration of its active sets: -1.3316). PDAS
+  // and the methods it finishes ended 'singular', the proximal point finish
+  // taking its slow steps for a runaway (2 of 17 converged; the Schur
+  // complement does not exist: A_EE is singular). A claim that there is no
+  // solution would be a wrong answer; one of rank 3 whose Schur complement
+  // was called infeasible is lcp/schur_round_off.
+  {
+    DenseMatrix A(6, 6);
+    A << 2, 3, -2, -1, 1, -2, 3, 5, -3, -1, 1, -4, -2, -3, 2, 1, -1, 2, -1, -1,
+      1, 1, -1, 0, 1, 1, -1, -1, 1, 0, -2, -4, 2, 0, 0, 4;
+    const Vector b{{-2.08, -3.62, 2.08, 0.54, -0.54, 3.08}};
+    every_method("rank 2 of 6, solutions exist: converged with their energy, "
+                 "never 'infeasible'",
+                 make_problem(A, b, {2, 5}, {-0.06, 0}),
+                 [](const Report &report, const Vector &) {
+                   return report.status != Status::infeasible &&
+                          (!report.converged() ||
+                           std::abs(report.energy + 1.3316) <= 1e-10);
+                 });
+  }
   // 4. An indefinite A (eigenvalues 3 and -1).
   {
     DenseMatrix A(2, 2);
