@@ -65,6 +65,7 @@ namespace unilateral
         .set("continuation_stages", report.continuation_stages)
         .set("regularisation", report.regularisation)
         .set("converged", report.converged())
+        .set("solved", report.solved)
         .set("status", lcp::to_string(report.status))
         .set("message", report.message)
         .set("energy", report.energy);
@@ -166,16 +167,18 @@ namespace unilateral
      * whose residuals the report gives).
      */
     lcp::Report
-    unsolved(const lcp::Problem &problem,
-             const std::string  &method,
-             const std::string  &proof,
-             lcp::Solution      &solution)
+    unsolved(const lcp::Problem          &problem,
+             const lcp::SolverParameters &parameters,
+             const std::string           &proof,
+             lcp::Solution               &solution)
     {
       solution.u      = lcp::Vector::Zero(problem.size());
       solution.lambda = lcp::Vector::Zero(problem.size());
       solution.active_set.clear();
       lcp::Report report;
-      report.solver  = "none (" + method + " not run)";
+      report.solver =
+        parameters.method + (parameters.schur_complement ? "_sc" : "");
+      report.solved  = false;
       report.status  = lcp::Status::infeasible;
       report.message = proof;
       report.energy  = lcp::energy(problem, solution.u);
@@ -214,30 +217,32 @@ namespace unilateral
     assemble(context);
     export_lcp_if_requested(context, lcp_problem);
 
-    lcp::Report       report;
-    const std::string proof = proof_of_no_solution();
-    if (!proof.empty())
-      {
-        if (context.progress != nullptr)
-          *context.progress << "  not solving: " << proof << std::endl;
-        report =
-          unsolved(lcp_problem, context.solver.method, proof, lcp_solution);
-      }
-    else
-      {
-        const auto timer = context.section("solve");
-        initial_solution(context);
-        if (context.progress != nullptr)
-          *context.progress
-            << "  solving with " << context.solver.method
-            << (context.solver.schur_complement ? " on the Schur complement" :
-                                                  "")
-            << std::endl;
-        report = lcp::solve_lcp(lcp_problem,
-                                context.solver,
-                                lcp_solution,
-                                context.progress);
-      }
+    lcp::Report report;
+    {
+      // The scene's proof that there is no solution is part of the stage.
+      const auto        timer = context.section("solve");
+      const std::string proof = proof_of_no_solution();
+      if (!proof.empty())
+        {
+          if (context.progress != nullptr)
+            *context.progress << "  not solving: " << proof << std::endl;
+          report = unsolved(lcp_problem, context.solver, proof, lcp_solution);
+        }
+      else
+        {
+          initial_solution(context);
+          if (context.progress != nullptr)
+            *context.progress
+              << "  solving with " << context.solver.method
+              << (context.solver.schur_complement ? " on the Schur complement" :
+                                                    "")
+              << std::endl;
+          report = lcp::solve_lcp(lcp_problem,
+                                  context.solver,
+                                  lcp_solution,
+                                  context.progress);
+        }
+    }
     write_solution_if_requested(context, lcp_solution);
     {
       const auto timer = context.section("postprocess");
@@ -333,8 +338,16 @@ namespace unilateral
     const auto precision = out.precision();
     out << "  LCP: " << quantity(problem.size(), "unknown") << ", "
         << quantity(problem.n_constrained(), "constraint") << "\n"
-        << "  solver " << report.solver << ": " << lcp::to_string(report.status)
-        << " after " << quantity(report.iterations, "iteration");
+        << "  solver " << report.solver << ": ";
+    if (!report.solved)
+      {
+        out << "not run, " << lcp::to_string(report.status)
+            << " (proved before solving)\n"
+            << "  note: " << report.message << "\n";
+        return;
+      }
+    out << lcp::to_string(report.status) << " after "
+        << quantity(report.iterations, "iteration");
     if (report.projected)
       out << " + " << report.projection_iterations << " projection";
     out << ", " << report.n_active << " active\n";

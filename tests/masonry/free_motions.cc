@@ -294,7 +294,21 @@ main()
   report("held by one roller at (0, 0)", run({"pivot.prm"}));
 
   write("push.prm", wall("base where x > s", "0.001; 0"));
-  report("without side rollers, pushed along x", run({"push.prm"}));
+  const Result push = run({"push.prm"});
+  report("without side rollers, pushed along x", push);
+  // Refused before solving: the summary says that no method ran, and has
+  // the stages every summary has (a review: no 'solve' in 'time', and
+  // 'none (pdas not run)' for the solver; the screen gave an energy and
+  // residuals of the zero start).
+  const std::string pushed = read("results/push/summary.json");
+  std::cout << "  summary.json: solved false: "
+            << yes_no(pushed.find("\"solved\": false") != std::string::npos)
+            << ", solver pdas: "
+            << yes_no(pushed.find("\"solver\": \"pdas\"") != std::string::npos)
+            << ", a 'solve' stage: "
+            << yes_no(!std::isnan(number(pushed, "solve")))
+            << "; the screen shows no energy: "
+            << yes_no(push.out.find("energy") == std::string::npos) << "\n";
 
   write("held.prm", wall("left, right, base where x > s"));
   report("with its rollers", run({"held.prm"}));

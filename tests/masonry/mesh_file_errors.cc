@@ -129,6 +129,11 @@ main()
       two_squares(1),
       "  subsection Boundary conditions\n    set Fixed = base where x <\n"
       "  end\n");
+  // The comma of max(x, 1) splits the list: once 'Missing parenthesis'.
+  bad("a region with a comma",
+      two_squares(1),
+      "  subsection Boundary conditions\n"
+      "    set Fixed = base where max(x, 1) < 2\n  end\n");
   bad("a prescribed displacement with three components in 2D",
       two_squares(1),
       "  subsection Boundary conditions\n"

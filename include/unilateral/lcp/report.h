@@ -71,6 +71,9 @@ namespace unilateral::lcp
     /// eps-continuation stages the projection needed (0 normally).
     unsigned int continuation_stages = 0;
     bool         projected           = false;
+    /// False where no method ran: the scene proved before solving that the
+    /// LCP has no solution, and u is the zero start.
+    bool solved = true;
     /// Regularisation actually added to the diagonal (absolute), 0 if none.
     double       regularisation = 0;
     unsigned int n_active       = 0;

@@ -737,9 +737,10 @@ namespace unilateral::masonry
       out << " + " << s.n_inclined_joint << " inclined";
     out << "\n";
     print_solver_summary(out, lcp_problem, report);
-    out << std::scientific << std::setprecision(6) << "  max displacement "
-        << max_displacement << ", " << n_closed_contacts << " of "
-        << quantity(s.n_constraints, "contact") << " closed\n";
+    if (report.solved)
+      out << std::scientific << std::setprecision(6) << "  max displacement "
+          << max_displacement << ", " << n_closed_contacts << " of "
+          << quantity(s.n_constraints, "contact") << " closed\n";
     if (n_degenerate_contacts > 0)
       out << "  " << quantity(n_degenerate_contacts, "contact")
           << (n_degenerate_contacts == 1 ? " has" : " have")
@@ -909,9 +910,9 @@ namespace unilateral::masonry
              structure + " is not held against every rigid motion" + unused +
              "; the loads do no measurable work along such a motion, so " +
              "they do not fix the displacement along it: hold it by a "
-             "support, or solve with 'Solver/Regularisation = auto' (the "
-             "default), with which pdas (the default method) picks one of "
-             "the answers (" +
+             "support, or solve with the default solver settings (pdas, "
+             "'Solver/Regularisation = auto', the full LCP rather than its "
+             "Schur complement), which pick one of the answers (" +
              report.message + ")";
     if (report.status == lcp::Status::singular)
       return "the solver found no configuration in which every block is "

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace unilateral::masonry
@@ -73,6 +74,19 @@ namespace unilateral::masonry
                         "each comma-separated entry is a boundary (a name of "
                         "the mesh or its number), optionally followed by "
                         "'where' and a region ('base where x < s')");
+        // A comma inside a region (max(x, 1), if(c, a, b)) splits it into
+        // two entries: muparser would only say 'Missing parenthesis'.
+        check_parameter(std::count(item.begin(), item.end(), '(') ==
+                          std::count(item.begin(), item.end(), ')'),
+                        parameter.substr(0, slash),
+                        parameter.substr(slash + 1),
+                        text,
+                        "has an entry with unbalanced parentheses, '" +
+                          dealii::Utilities::trim(item) +
+                          "': commas separate the entries, so a region "
+                          "cannot contain one (no max(a, b), min(a, b) or "
+                          "if(c, a, b)); combine conditions with && and || "
+                          "instead ('base where x > 1 && x < 2')");
         result.push_back(selection);
       }
     return result;
@@ -265,8 +279,9 @@ namespace unilateral::masonry
       " A comma-separated list of boundaries (names of the mesh, or their "
       "numbers), each optionally restricted to a region: 'base where x < "
       "s' (an expression of x, y, z and the constants g, H, s, without "
-      "commas). A condition holds at a node of its faces if the node lies "
-      "in the face's part inside the region or on its edge. Where faces "
+      "commas: combine conditions with && and ||). A condition holds at a "
+      "node of its faces if the node lies in the face's part inside the "
+      "region or on its edge. Where faces "
       "with different conditions meet, a node takes the stronger one, "
       "direction by direction: Fixed and Prescribed displacement over "
       "Normal displacement zero over Signorini over traction.";
