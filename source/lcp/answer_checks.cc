@@ -296,9 +296,10 @@ namespace unilateral::lcp
                        const double    kkt_tolerance,
                        Report         &report)
   {
-    if (!report.converged() || solution.u.size() != problem.size())
+    // The multipliers assess_answer computed from u.
+    const Vector &lambda = solution.lambda;
+    if (!report.converged() || lambda.size() != problem.size())
       return;
-    const Vector lambda   = problem.A * solution.u - problem.b;
     const Vector terms    = absolute_product(problem.A, solution.u);
     const double rounding = 10 * std::numeric_limits<double>::epsilon() *
                             terms.lpNorm<Eigen::Infinity>();
