@@ -298,7 +298,8 @@ namespace unilateral::lcp
   {
     // The multipliers assess_answer computed from u.
     const Vector &lambda = solution.lambda;
-    if (!report.converged() || lambda.size() != problem.size())
+    if (!report.converged() || lambda.size() != problem.size() ||
+        problem.eliminated)
       return;
     const Vector terms    = absolute_product(problem.A, solution.u);
     const double rounding = 10 * std::numeric_limits<double>::epsilon() *

@@ -29,6 +29,7 @@ namespace unilateral::lcp
     mostly_active      = other.mostly_active;
     known_semidefinite = other.known_semidefinite;
     definite           = other.definite;
+    eliminated         = other.eliminated;
     energy_unit        = other.energy_unit;
     tearing            = std::move(other.tearing);
     hierarchy          = std::move(other.hierarchy);

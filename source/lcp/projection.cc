@@ -3,6 +3,7 @@
 #include <unilateral/lcp/projection.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -192,10 +193,29 @@ namespace unilateral::lcp
      * look like a runaway. There @p last_stage, the answer of the last
      * continuation stage (on A + eps d I, eps down to 1e-14 ... 1e-11 d),
      * may already solve the LCP on A (its free motions unloaded, at no cost
-     * to the residuals); it is taken if it passes the checks, and the final
-     * judgement checks it like any answer. On success @p solution is the
-     * answer; the iterations and counters go to @p report.
+     * to the residuals): it is taken if it passes the checks and does not
+     * depend on eps, i.e. no unknown grew by a hundred times from @p
+     * previous_stage, the answer at a thousand times its eps. Where the
+     * loads drive a free motion (an LCP without a solution) the stage moves
+     * along it by the loads' work over eps, and its residual, eps times
+     * that motion, passes the checks (a review); a proximal point method
+     * from it with its eps moves by the loads' rounding over eps in every
+     * step and cannot tell. The final judgement checks the answer like any
+     * other. On success @p solution is the answer; the iterations and
+     * counters go to @p report.
      */
+    /// Whether an unknown of @p later exceeds a hundred times its value in
+    /// @p earlier by more than @p tolerance times the largest of @p later.
+    bool
+    grew(const Vector &later, const Vector &earlier, const double tolerance)
+    {
+      const double floor = tolerance * later.lpNorm<Eigen::Infinity>();
+      for (Eigen::Index i = 0; i < later.size(); ++i)
+        if (std::abs(later[i]) > 100 * std::abs(earlier[i]) + floor)
+          return true;
+      return false;
+    }
+
     Report
     finish_without_projection(const Problem          &problem,
                               const SolverParameters &parameters,
@@ -203,6 +223,7 @@ namespace unilateral::lcp
                               const double            last_eps,
                               Solution                approximate,
                               std::optional<Vector>   last_stage,
+                              const Vector           &previous_stage,
                               Solution               &solution,
                               Report                 &report,
                               std::ostream           *progress)
@@ -219,6 +240,7 @@ namespace unilateral::lcp
       if (proximal.converged())
         solution = std::move(approximate);
       else if (last_stage.has_value() &&
+               !grew(*last_stage, previous_stage, parameters.kkt_tolerance) &&
                passes_checks(problem, parameters.kkt_tolerance, *last_stage))
         {
           if (progress != nullptr)
@@ -272,6 +294,7 @@ namespace unilateral::lcp
     // The answer of the last continuation stage that converged (on A + eps
     // d I with the smallest eps reached), for the end of the finish below.
     std::optional<Vector> last_stage;
+    Vector                previous_stage = approximate.u;
     for (;;)
       {
         const bool stage_left = eps_k * 1e-3 >= last_eps;
@@ -314,6 +337,8 @@ namespace unilateral::lcp
             projection = stage;
             break;
           }
+        if (last_stage.has_value())
+          previous_stage = std::move(*last_stage);
         last_stage = start.u;
       }
     // Not where the projection proved that there is no answer.
@@ -326,6 +351,7 @@ namespace unilateral::lcp
                                                         last_eps,
                                                         approximate,
                                                         std::move(last_stage),
+                                                        previous_stage,
                                                         solution,
                                                         report,
                                                         progress);

@@ -65,6 +65,7 @@ namespace unilateral::lcp
     reduced.lower_bound = problem.lower_bound;
     // The same constraints, so what the builder knew of them holds.
     reduced.mostly_active = problem.mostly_active;
+    reduced.eliminated    = true;
     check_and_normalise(reduced);
   }
 

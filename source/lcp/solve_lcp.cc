@@ -518,6 +518,8 @@ namespace unilateral::lcp
           report.solver = check_report.solver;
           report.take_counts_of(check_report);
         }
+      else if (check_report.converged())
+        report.message += "; " + label + "'s answer fails the checks too";
       else
         report.message += "; " + label + " found none either (" +
                           to_string(check_report.status) + ")";
@@ -608,12 +610,18 @@ namespace unilateral::lcp
       report.add_times(reduced_report);
       PhaseTimer timer(report, "recover u_E");
       solution.u = schur->recover(reduced_solution.u);
-      // A failure of the reduced problem is judged on the full one: where
-      // A_EE holds all of A's rank, M and q are round-off, and PDAS's proof
-      // that the reduced LCP has no solution was a proof about round-off
-      // (a review: 'infeasible' for LCPs with solutions, whose recovered u
-      // was the answer). The final judgement checks it like any answer.
-      if (!report.converged() &&
+      // Where A_EE holds all of A's rank, M and q are round-off, and a
+      // failure of the reduced problem (PDAS's proof that it has no
+      // solution) is a failure on round-off: a review's LCPs with solutions
+      // ended 'infeasible', their recovered u the answer. There, and only
+      // where q is that small (a real imbalance of a free motion is not
+      // round-off), the recovered u is judged on the full LCP; the final
+      // judgement checks it like any answer.
+      const bool reduced_loads_rounded =
+        schur->reduced_problem().b.lpNorm<Eigen::Infinity>() <=
+        1e3 * std::numeric_limits<double>::epsilon() *
+          problem.b.lpNorm<Eigen::Infinity>();
+      if (!report.converged() && reduced_loads_rounded &&
           passes_checks(problem, parameters.kkt_tolerance, solution.u))
         {
           if (progress != nullptr)

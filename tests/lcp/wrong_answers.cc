@@ -221,6 +221,26 @@ main()
                            std::abs(report.energy + 1.3316) <= 1e-10);
                  });
   }
+  // 9. No solution: a free pair, A = [[1, -1], [-1, 1]], pulled apart by
+  // b = (-1, 1 + 1e-4) with u_1 >= 0, beside a part loaded 1e5 (a review).
+  // The imbalance is 1e-9 of the loads, within the KKT tolerance, so an
+  // answer that balances the loads to it may be given (MPRGP's proximal
+  // finish moves the pair by 0.03); not one that moved the pair by the
+  // imbalance over the regularisation: the projection's last continuation
+  // stage took it 5e7 away, its residual, eps times that, passing the
+  // checks, until a stage's answer had to be independent of eps.
+  {
+    DenseMatrix A = DenseMatrix::Zero(3, 3);
+    A << 1, -1, 0, -1, 1, 0, 0, 0, 1;
+    const Vector b{{-1.0, 1.0001, 1e5}};
+    every_method("no solution (a free pair pulled apart by 1e-4 beside a "
+                 "part loaded 1e5): not converged, or the pair within 1",
+                 make_problem(A, b, {0}, {0.0}),
+                 [](const Report &report, const Vector &u) {
+                   return !report.converged() || std::abs(u[0]) < 1;
+                 });
+  }
+
   // 4. An indefinite A (eigenvalues 3 and -1).
   {
     DenseMatrix A(2, 2);

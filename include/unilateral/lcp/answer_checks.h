@@ -101,8 +101,9 @@ namespace unilateral::lcp
    * a relative residual of 5e-11). Not for contacts off their bound: an
    * approximate method's leftover slack there is measured against itself
    * (benchmarks/stress/README.md, a check of every row tried and
-   * reverted). Takes the multipliers from @p solution (assess_answer sets
-   * them from u).
+   * reverted), nor for a Schur complement (Problem::eliminated: its
+   * rounding is the full problem's). Takes the multipliers from @p
+   * solution (assess_answer sets them from u).
    */
   void
   check_contact_forces(const Problem  &problem,

@@ -87,6 +87,13 @@ namespace unilateral::lcp
     /// plate) rather than a drift: the answer checks (answer_checks.h) do
     /// not refuse an answer for it.
     bool definite = false;
+    /// A and b were computed by an elimination (the Schur complement on the
+    /// constrained unknowns): they carry the rounding of the original
+    /// problem's forces, which their own |A| |u| does not show (where A_EE
+    /// holds all of A's rank they are nothing but that rounding), so the
+    /// check of each contact against its own row does not apply to them;
+    /// the full problem's judgement of the recovered answer does.
+    bool eliminated = false;
     /// The problem torn into floating subdomains (tearing.h), for the dual
     /// methods; null if the builder made none.
     std::shared_ptr<const Tearing> tearing;

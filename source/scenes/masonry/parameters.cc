@@ -83,10 +83,11 @@ namespace unilateral::masonry
                         text,
                         "has an entry with unbalanced parentheses, '" +
                           dealii::Utilities::trim(item) +
-                          "': commas separate the entries, so a region "
-                          "cannot contain one (no max(a, b), min(a, b) or "
-                          "if(c, a, b)); combine conditions with && and || "
-                          "instead ('base where x > 1 && x < 2')");
+                          "': every '(' needs its ')', and a region cannot "
+                          "contain a comma, which separates the entries (no "
+                          "max(a, b), min(a, b) or if(c, a, b)); combine "
+                          "conditions with && and || instead ('base where x "
+                          "> 1 && x < 2')");
         result.push_back(selection);
       }
     return result;
