@@ -2,6 +2,8 @@
 #include <unilateral/lcp/schur_complement.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace unilateral::lcp
 {
@@ -31,10 +33,18 @@ namespace unilateral::lcp
         return;
       }
     const Vector Ax = problem.A * x;
+    // The terms of each b_hat_k, whose rounding it carries.
+    const Vector terms = absolute_product(problem.A, x);
     reduced.b.resize(n_c);
     for (Index k = 0; k < n_c; ++k)
-      reduced.b[k] =
-        problem.b[problem.constrained[k]] - Ax[problem.constrained[k]];
+      {
+        const Index i       = problem.constrained[k];
+        reduced.b[k]        = problem.b[i] - Ax[i];
+        all_loads_round_off = all_loads_round_off &&
+                              std::abs(reduced.b[k]) <=
+                                1e3 * std::numeric_limits<double>::epsilon() *
+                                  (std::abs(problem.b[i]) + terms[i]);
+      }
 
     // Columns of A_hat in blocks: x_S = e_j, x_E = -A_EE^-1 A_Ej, then
     // A_hat e_j = (A x)_S.

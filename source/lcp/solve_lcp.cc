@@ -614,14 +614,11 @@ namespace unilateral::lcp
       // failure of the reduced problem (PDAS's proof that it has no
       // solution) is a failure on round-off: a review's LCPs with solutions
       // ended 'infeasible', their recovered u the answer. There, and only
-      // where q is that small (a real imbalance of a free motion is not
-      // round-off), the recovered u is judged on the full LCP; the final
-      // judgement checks it like any answer.
-      const bool reduced_loads_rounded =
-        schur->reduced_problem().b.lpNorm<Eigen::Infinity>() <=
-        1e3 * std::numeric_limits<double>::epsilon() *
-          problem.b.lpNorm<Eigen::Infinity>();
-      if (!report.converged() && reduced_loads_rounded &&
+      // where every entry of q is the rounding of its own terms (a real
+      // imbalance of a free motion is not, however heavily loaded the rest
+      // of the problem: a review), the recovered u is judged on the full
+      // LCP; the final judgement checks it like any answer.
+      if (!report.converged() && schur->loads_round_off() &&
           passes_checks(problem, parameters.kkt_tolerance, solution.u))
         {
           if (progress != nullptr)

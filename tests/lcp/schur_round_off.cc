@@ -11,7 +11,8 @@
 // system and PDAS, which verifies that claim, solves the reduced problem;
 // the check of each contact against its own row refused PDAS's answer
 // there (the reduced entries are round-off) until it left Schur
-// complements to the full problem's judgement.
+// complements to the full problem's judgement. And a free pair pulled
+// apart beside a heavily loaded part, which has no solution.
 #include "../application_test_tools.h"
 
 using namespace application_test;
@@ -159,4 +160,35 @@ main()
         "7 -0.41999999999999998\n"
         "8 1.8\n");
   run_methods("r8", -13.197944709380);
+
+  // No solution: a free pair pulled apart by 1e-3 beside a part loaded
+  // 1e10 (a review). The reduced load, 1e-3, is not the rounding of its
+  // terms (about 2), however small beside the largest load: the Schur
+  // complement's 'infeasible' stands (it was rescued as 'converged', the
+  // pair 4.5e12 away, while the rescue compared q with the largest load).
+  write("pair_A.mtx",
+        "%%MatrixMarket matrix coordinate real general\n3 3 5\n"
+        "1 1 1\n1 2 -1\n2 1 -1\n2 2 1\n3 3 1\n");
+  write("pair_b.txt", "-1\n1.001\n1e10\n");
+  write("pair_c.txt", "1 0\n");
+  for (const std::string method : {"pdas", "graves", "lssnn", "pdpc"})
+    {
+      write("pair_" + method + ".prm",
+            "set Scene = lcp\nsubsection Output\n"
+            "  set Directory = results\n  set Print timings = false\n"
+            "  set Progress = false\nend\nsubsection LCP\n"
+            "  set Matrix file = pair_A.mtx\n"
+            "  set Right-hand side file = pair_b.txt\n"
+            "  set Constraints file = pair_c.txt\nend\n"
+            "subsection Solver\n  set Method = " +
+              method + "\n  set Schur complement = true\nend\n");
+      const Result result = run({"pair_" + method + ".prm"});
+      std::cout << "no solution, " << method
+                << " on the Schur complement: exit code " << result.code
+                << ", said infeasible: "
+                << yes_no(read("results/pair_" + method + "/summary.json")
+                            .find("\"status\": \"infeasible\"") !=
+                          std::string::npos)
+                << "\n";
+    }
 }

@@ -39,6 +39,16 @@ namespace unilateral::lcp
       return reduced;
     }
 
+    /// Whether every entry of the reduced right-hand side is within 1e3
+    /// epsilon of the terms it was computed from, |b_S| + |A_SE| |A_EE^-1
+    /// b_E|: nothing but their rounding (where A_EE holds all of A's rank
+    /// and the loads do no work on the reduced unknowns).
+    bool
+    loads_round_off() const
+    {
+      return all_loads_round_off;
+    }
+
     /// The full u from the reduced solution u_S.
     Vector
     recover(const Vector &u_S);
@@ -48,6 +58,7 @@ namespace unilateral::lcp
     std::unique_ptr<ActiveSetSystem> eliminated;
     std::vector<char>                fixed;
     Problem                          reduced;
-    bool                             is_singular = false;
+    bool                             is_singular         = false;
+    bool                             all_loads_round_off = true;
   };
 } // namespace unilateral::lcp
