@@ -181,6 +181,18 @@ namespace unilateral::lcp
       return result;
     }
 
+    /// Whether an unknown of @p later exceeds a hundred times its value in
+    /// @p earlier by more than @p tolerance times the largest of @p later.
+    bool
+    grew(const Vector &later, const Vector &earlier, const double tolerance)
+    {
+      const double floor = tolerance * later.lpNorm<Eigen::Infinity>();
+      for (Eigen::Index i = 0; i < later.size(); ++i)
+        if (std::abs(later[i]) > 100 * std::abs(earlier[i]) + floor)
+          return true;
+      return false;
+    }
+
     /**
      * Where the projection onto A fails, A is singular on the answer's free
      * set or PDAS does not settle on it: finish by the proximal point method
@@ -204,18 +216,6 @@ namespace unilateral::lcp
      * other. On success @p solution is the answer; the iterations and
      * counters go to @p report.
      */
-    /// Whether an unknown of @p later exceeds a hundred times its value in
-    /// @p earlier by more than @p tolerance times the largest of @p later.
-    bool
-    grew(const Vector &later, const Vector &earlier, const double tolerance)
-    {
-      const double floor = tolerance * later.lpNorm<Eigen::Infinity>();
-      for (Eigen::Index i = 0; i < later.size(); ++i)
-        if (std::abs(later[i]) > 100 * std::abs(earlier[i]) + floor)
-          return true;
-      return false;
-    }
-
     Report
     finish_without_projection(const Problem          &problem,
                               const SolverParameters &parameters,
