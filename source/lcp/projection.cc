@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -181,14 +182,30 @@ namespace unilateral::lcp
       return result;
     }
 
-    /// Whether an unknown of @p later exceeds a hundred times its value in
-    /// @p earlier by more than @p tolerance times the largest of @p later.
+    /**
+     * Whether an unknown of @p later, the answer on A + @p eps I, exceeds a
+     * hundred times its value in @p earlier by more than @p tolerance times
+     * the largest of @p later, held there by a regularisation force eps
+     * u_i beyond a hundred times the rounding of its row's forces: a load
+     * drives it. A free motion that no load drives grows as much between
+     * two stages, by the rounding of its loads over eps, but its
+     * regularisation force is that rounding, and any position along it is
+     * an answer.
+     */
     bool
-    grew(const Vector &later, const Vector &earlier, const double tolerance)
+    grew(const Problem &problem,
+         const Vector  &later,
+         const double   eps,
+         const Vector  &earlier,
+         const double   tolerance)
     {
       const double floor = tolerance * later.lpNorm<Eigen::Infinity>();
+      const Vector terms = absolute_product(problem.A, later);
       for (Eigen::Index i = 0; i < later.size(); ++i)
-        if (std::abs(later[i]) > 100 * std::abs(earlier[i]) + floor)
+        if (std::abs(later[i]) > 100 * std::abs(earlier[i]) + floor &&
+            eps * std::abs(later[i]) >
+              100 * std::numeric_limits<double>::epsilon() *
+                (std::abs(problem.b[i]) + terms[i]))
           return true;
       return false;
     }
@@ -206,8 +223,9 @@ namespace unilateral::lcp
      * continuation stage (on A + eps d I, eps down to 1e-14 ... 1e-11 d),
      * may already solve the LCP on A (its free motions unloaded, at no cost
      * to the residuals): it is taken if it passes the checks and does not
-     * depend on eps, i.e. no unknown grew by a hundred times from @p
-     * previous_stage, the answer at a thousand times its eps. Where the
+     * depend on eps, i.e. no unknown that a load drives grew by a hundred
+     * times from @p previous_stage, the answer at a thousand times its eps
+     * (grew). Where the
      * loads drive a free motion (an LCP without a solution) the stage moves
      * along it by the loads' work over eps, and its residual, eps times
      * that motion, passes the checks (a review); a proximal point method
@@ -223,6 +241,7 @@ namespace unilateral::lcp
                               const double            last_eps,
                               Solution                approximate,
                               std::optional<Vector>   last_stage,
+                              const double            last_stage_eps,
                               const Vector           &previous_stage,
                               Solution               &solution,
                               Report                 &report,
@@ -240,7 +259,11 @@ namespace unilateral::lcp
       if (proximal.converged())
         solution = std::move(approximate);
       else if (last_stage.has_value() &&
-               !grew(*last_stage, previous_stage, parameters.kkt_tolerance) &&
+               !grew(problem,
+                     *last_stage,
+                     last_stage_eps,
+                     previous_stage,
+                     parameters.kkt_tolerance) &&
                passes_checks(problem, parameters.kkt_tolerance, *last_stage))
         {
           if (progress != nullptr)
@@ -295,6 +318,7 @@ namespace unilateral::lcp
     // d I with the smallest eps reached), for the end of the finish below.
     std::optional<Vector> last_stage;
     Vector                previous_stage = approximate.u;
+    double                last_stage_eps = 0;
     for (;;)
       {
         const bool stage_left = eps_k * 1e-3 >= last_eps;
@@ -339,7 +363,8 @@ namespace unilateral::lcp
           }
         if (last_stage.has_value())
           previous_stage = std::move(*last_stage);
-        last_stage = start.u;
+        last_stage     = start.u;
+        last_stage_eps = eps_k;
       }
     // Not where the projection proved that there is no answer.
     std::string proximal_failure;
@@ -351,6 +376,7 @@ namespace unilateral::lcp
                                                         last_eps,
                                                         approximate,
                                                         std::move(last_stage),
+                                                        last_stage_eps,
                                                         previous_stage,
                                                         solution,
                                                         report,

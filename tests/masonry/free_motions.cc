@@ -26,7 +26,10 @@
 //    KKT tolerance of 0.05 that the message allowed, 1 degree ended
 //    'converged' (exit 0) with that motion (a review). At 1e-11 degrees the
 //    loads' work along the slide, 1.7e-13 of |f| |u|, is below what the
-//    scene calls a proof (2.2e-10): the solver decides there;
+//    scene calls a proof (2.2e-10): the solver decides there, and ends
+//    'converged', its residual within the KKT tolerance, with the note that
+//    the answer holds only to it (the slide's regularisation force is at
+//    the rounding of its rows' forces);
 //  - a block in a V-groove of 5e-6 pushed by 1e-6 of its weight is in
 //    equilibrium at the origin and far from it (a review found it called
 //    'no equilibrium' at 1e5: the test of a free motion once allowed more
