@@ -6,7 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -210,6 +209,16 @@ namespace unilateral::lcp
       return false;
     }
 
+    /// The answers of the continuation stages that converged: @p last on
+    /// A + @p last_eps I (last_eps 0 if none did), @p previous at a
+    /// thousand times that eps (at first the approximate answer).
+    struct Stages
+    {
+      Vector previous;
+      Vector last;
+      double last_eps = 0;
+    };
+
     /**
      * Where the projection onto A fails, A is singular on the answer's free
      * set or PDAS does not settle on it: finish by the proximal point method
@@ -219,20 +228,18 @@ namespace unilateral::lcp
      * whose own regularisation is large (PSOR, MPRGP: 1e-2 d) on a body
      * free to slide unloaded, whose elastic deflection the regularisation
      * held back; the first steps move by more than the answer's size and
-     * look like a runaway. There @p last_stage, the answer of the last
-     * continuation stage (on A + eps d I, eps down to 1e-14 ... 1e-11 d),
-     * may already solve the LCP on A (its free motions unloaded, at no cost
-     * to the residuals): it is taken if it passes the checks and does not
-     * depend on eps, i.e. no unknown that a load drives grew by a hundred
-     * times from @p previous_stage, the answer at a thousand times its eps
-     * (grew). Where the
-     * loads drive a free motion (an LCP without a solution) the stage moves
-     * along it by the loads' work over eps, and its residual, eps times
-     * that motion, passes the checks (a review); a proximal point method
-     * from it with its eps moves by the loads' rounding over eps in every
-     * step and cannot tell. The final judgement checks the answer like any
-     * other. On success @p solution is the answer; the iterations and
-     * counters go to @p report.
+     * look like a runaway. There the last continuation stage's answer (eps
+     * down to 1e-14 ... 1e-11 d) may already solve the LCP on A (its free
+     * motions unloaded, at no cost to the residuals): it is taken if it
+     * passes the checks and does not depend on eps, i.e. no unknown that a
+     * load drives grew by a hundred times from the stage before (grew).
+     * Where the loads drive a free motion (an LCP without a solution) the
+     * stage moves along it by the loads' work over eps, and its residual,
+     * eps times that motion, passes the checks (a review); a proximal point
+     * method from it with its eps moves by the loads' rounding over eps in
+     * every step and cannot tell. The final judgement checks the answer
+     * like any other. On success @p solution is the answer; the iterations
+     * and counters go to @p report.
      */
     Report
     finish_without_projection(const Problem          &problem,
@@ -240,9 +247,7 @@ namespace unilateral::lcp
                               const double            first_eps,
                               const double            last_eps,
                               Solution                approximate,
-                              std::optional<Vector>   last_stage,
-                              const double            last_stage_eps,
-                              const Vector           &previous_stage,
+                              Stages                  stages,
                               Solution               &solution,
                               Report                 &report,
                               std::ostream           *progress)
@@ -258,20 +263,20 @@ namespace unilateral::lcp
       report.counters += proximal.counters;
       if (proximal.converged())
         solution = std::move(approximate);
-      else if (last_stage.has_value() &&
+      else if (stages.last_eps > 0 &&
                !grew(problem,
-                     *last_stage,
-                     last_stage_eps,
-                     previous_stage,
+                     stages.last,
+                     stages.last_eps,
+                     stages.previous,
                      parameters.kkt_tolerance) &&
-               passes_checks(problem, parameters.kkt_tolerance, *last_stage))
+               passes_checks(problem, parameters.kkt_tolerance, stages.last))
         {
           if (progress != nullptr)
             *progress << "    projection: the last continuation stage's "
                          "answer solves the problem on A ("
                       << proximal.message << ")" << std::endl;
           solution   = Solution();
-          solution.u = std::move(*last_stage);
+          solution.u = std::move(stages.last);
           return Report(); // converged
         }
       return proximal;
@@ -314,11 +319,9 @@ namespace unilateral::lcp
     std::shared_ptr<const ActiveSetFactor> nearby = std::move(start.factor);
     const Solution                         approximate = start;
     Report                                 projection;
-    // The answer of the last continuation stage that converged (on A + eps
-    // d I with the smallest eps reached), for the end of the finish below.
-    std::optional<Vector> last_stage;
-    Vector                previous_stage = approximate.u;
-    double                last_stage_eps = 0;
+    // The continuation stages' answers, for the end of the finish below.
+    Stages stages;
+    stages.previous = approximate.u;
     for (;;)
       {
         const bool stage_left = eps_k * 1e-3 >= last_eps;
@@ -361,10 +364,10 @@ namespace unilateral::lcp
             projection = stage;
             break;
           }
-        if (last_stage.has_value())
-          previous_stage = std::move(*last_stage);
-        last_stage     = start.u;
-        last_stage_eps = eps_k;
+        if (stages.last_eps > 0)
+          stages.previous = std::move(stages.last);
+        stages.last     = start.u;
+        stages.last_eps = eps_k;
       }
     // Not where the projection proved that there is no answer.
     std::string proximal_failure;
@@ -375,9 +378,7 @@ namespace unilateral::lcp
                                                         first_eps,
                                                         last_eps,
                                                         approximate,
-                                                        std::move(last_stage),
-                                                        last_stage_eps,
-                                                        previous_stage,
+                                                        std::move(stages),
                                                         solution,
                                                         report,
                                                         progress);
