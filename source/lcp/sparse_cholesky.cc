@@ -1,9 +1,9 @@
 #include <unilateral/base/memory.h>
+#include <unilateral/base/openmp_regions.h>
 #include <unilateral/lcp/distributed_cholesky.h>
 #include <unilateral/lcp/sparse_cholesky.h>
 
 #include <cholmod.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -80,16 +80,11 @@ namespace unilateral::lcp
 
     Implementation()
     {
-      // CHOLMOD 3 (SuiteSparse 5.12) runs small loops of every supernode
-      // (clearing a map, copying a few columns) as OpenMP regions of a
-      // compile-time 4 threads, whatever OMP_NUM_THREADS says: on 2 cores
-      // every such loop wakes threads that have almost nothing to do, and
-      // much of the run is spent in the kernel waking them
-      // (benchmarks/masonry_tables/README.md, "Design measurements"). Those
-      // regions run serially from here on; the dense kernels keep BLAS's
-      // own threads. Process-wide: nothing else here uses OpenMP (deal.II
-      // runs on TBB).
-      omp_set_max_active_levels(0);
+      // CHOLMOD's small OpenMP regions run on this thread from here on
+      // (openmp::run_regions_serially says why); the dense kernels keep
+      // BLAS's own threads. Process-wide: nothing else here uses OpenMP
+      // (deal.II runs on TBB).
+      openmp::run_regions_serially();
       cholmod_start(&common);
       // Errors become return codes we check, never prints to stderr.
       common.print                      = 0;
