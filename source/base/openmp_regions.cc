@@ -41,7 +41,12 @@ GOMP_parallel(const RegionBody   body,
 {
   static const auto next_in_load_order =
     reinterpret_cast<Parallel>(dlsym(RTLD_NEXT, "GOMP_parallel"));
-  if (omp_get_max_active_levels() == 0 || next_in_load_order == nullptr)
+  // Outside any team only: a body run inside another team's thread would
+  // see that team's size and do its share of a loop alone. Cancellation
+  // needs a team to cancel.
+  if ((omp_get_max_active_levels() == 0 && omp_get_level() == 0 &&
+       !omp_get_cancellation()) ||
+      next_in_load_order == nullptr)
     {
       regions_without_team.fetch_add(1, std::memory_order_relaxed);
       body(data);

@@ -80,11 +80,6 @@ namespace unilateral::lcp
 
     Implementation()
     {
-      // CHOLMOD's small OpenMP regions run on this thread from here on
-      // (openmp::run_regions_serially says why); the dense kernels keep
-      // BLAS's own threads. Process-wide: nothing else here uses OpenMP
-      // (deal.II runs on TBB).
-      openmp::run_regions_serially();
       cholmod_start(&common);
       // Errors become return codes we check, never prints to stderr.
       common.print                      = 0;
@@ -357,6 +352,10 @@ namespace unilateral::lcp
     if (!A.isCompressed())
       throw std::logic_error("SparseCholesky needs a compressed matrix");
     auto &impl = *implementation;
+    // CHOLMOD's small OpenMP regions run on this thread without a team
+    // (openmp::run_regions_serially says why; a setting of the thread's);
+    // the dense kernels keep BLAS's own threads.
+    openmp::run_regions_serially();
     if (impl.distributed) // MUMPS orders the matrix itself
       return impl.factor_valid =
                impl.distributed->factorise(A, minimum_rcond, counters);

@@ -5,8 +5,10 @@
 namespace unilateral::openmp
 {
   /**
-   * Run every OpenMP parallel region of the process on the thread that
-   * reaches it, from now on, without starting a team.
+   * Run the OpenMP parallel regions that the calling thread starts outside
+   * any team on this thread itself, from now on, without forming a team.
+   * OpenMP keeps this setting per thread: SparseCholesky sets it on the
+   * thread that factorises.
    *
    * Why: CHOLMOD 3 (SuiteSparse 5.12) runs small loops of every supernode
    * (clearing a map, copying a few columns) as OpenMP regions of a
@@ -19,25 +21,33 @@ namespace unilateral::openmp
    * machine (figures: benchmarks/masonry_tables/README.md, "Design
    * measurements", "OpenMP regions without a team").
    *
-   * So this library defines GOMP_parallel, the entry libgomp gives the
-   * code a compiler generates for `#pragma omp parallel`, and the libraries
-   * loaded after it (CHOLMOD) call ours: while max-active-levels is 0 it
-   * calls the region's body once on the calling thread, which is the
-   * region of one thread that OpenMP prescribes when no level may be
-   * active (omp_get_thread_num() 0, omp_get_num_threads() 1, barriers
-   * and work sharing of an orphaned construct); otherwise it hands the
-   * region to libgomp's own. A departure from the usual (a library
-   * interposing a runtime's symbol) made on purpose: CHOLMOD 3 has no
-   * setting for its thread count, and libgomp none for the wake-up.
-   * Process-wide, as the setting itself is: a program linking this library
-   * that runs OpenMP regions of its own gets them serial once a
-   * SparseCholesky exists.
+   * So this library defines GOMP_parallel, libgomp's entry for the code a
+   * compiler generates for `#pragma omp parallel`, and the libraries loaded
+   * after it (CHOLMOD; gmsh and SuperLU_DIST too) call ours. Where the
+   * calling thread has max-active-levels 0, is in no team (omp_get_level()
+   * 0) and cancellation is off, it calls the region's body once on that
+   * thread: as libgomp's team of one would, the body sees thread 0 of 1,
+   * and its barriers, work sharing and tasks take libgomp's path for
+   * constructs outside a region. What differs: omp_get_level() is 0 inside,
+   * not 1, and an ICV the body sets (omp_set_num_threads) stays set after
+   * it; CHOLMOD does neither. Every other region goes to libgomp's own
+   * GOMP_parallel, and so do the combined entries (`parallel for
+   * schedule(dynamic)`, `parallel sections`), which CHOLMOD does not use.
+   *
+   * A departure from the usual (a library interposing a runtime's symbol)
+   * made on purpose: CHOLMOD 3 has no setting for its thread count, and
+   * libgomp none for the wake-up. The gain needs this library before
+   * libgomp in the load order, as the executable and the tests have it; a
+   * program that loads libgomp first (built with -fopenmp and loading this
+   * library by dlopen, or linking -lgomp ahead of it) keeps libgomp's
+   * regions, with the same results.
    */
   void
   run_regions_serially();
 
-  /// How many regions this library's GOMP_parallel has run on the calling
-  /// thread so far: the tests' evidence that CHOLMOD's calls reach it.
+  /// How many regions this library's GOMP_parallel has run without a team
+  /// so far, on all threads: the tests' evidence that CHOLMOD's calls reach
+  /// it.
   std::uint64_t
   regions_run_without_team();
 } // namespace unilateral::openmp
