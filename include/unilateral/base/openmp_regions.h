@@ -23,15 +23,16 @@ namespace unilateral::openmp
    *
    * So this library defines GOMP_parallel, libgomp's entry for the code a
    * compiler generates for `#pragma omp parallel`, and the libraries loaded
-   * after it (CHOLMOD; gmsh and SuperLU_DIST too) call ours. Where the
-   * calling thread has max-active-levels 0, is in no team (omp_get_level()
-   * 0) and cancellation is off, it calls the region's body once on that
-   * thread: as libgomp's team of one would, the body sees thread 0 of 1,
-   * and its barriers, work sharing and tasks take libgomp's path for
+   * after it (CHOLMOD; gmsh, SuperLU_DIST, LibRaw and muParser too) call
+   * ours. Where the calling thread has max-active-levels 0, is in no team
+   * (omp_get_level() 0) and cancellation is off, it calls the region's body
+   * once on that thread: as libgomp's team of one would, the body sees thread
+   * 0 of 1, and its barriers, work sharing and tasks take libgomp's path for
    * constructs outside a region. What differs: omp_get_level() is 0 inside,
-   * not 1, and an ICV the body sets (omp_set_num_threads) stays set after
-   * it; CHOLMOD does neither. Every other region goes to libgomp's own
-   * GOMP_parallel, and so do the combined entries (`parallel for
+   * not 1, the body sees the caller's ICVs (the outer level of a nested
+   * OMP_NUM_THREADS list), and an ICV it sets (omp_set_num_threads) stays set
+   * after it; CHOLMOD does none of this. Every other region goes to libgomp's
+   * own GOMP_parallel, and so do the combined entries (`parallel for
    * schedule(dynamic)`, `parallel sections`), which CHOLMOD does not use.
    *
    * A departure from the usual (a library interposing a runtime's symbol)
@@ -40,7 +41,8 @@ namespace unilateral::openmp
    * libgomp in the load order, as the executable and the tests have it; a
    * program that loads libgomp first (built with -fopenmp and loading this
    * library by dlopen, or linking -lgomp ahead of it) keeps libgomp's
-   * regions, with the same results.
+   * regions, with the same results; so does a run with OMP_CANCELLATION
+   * set to true.
    */
   void
   run_regions_serially();
