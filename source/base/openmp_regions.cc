@@ -8,6 +8,9 @@
 namespace
 {
   std::atomic<std::uint64_t> regions_without_team{0};
+
+  using RegionBody = void (*)(void *);
+  using Parallel   = void (*)(RegionBody, void *, unsigned int, unsigned int);
 } // namespace
 
 namespace unilateral::openmp
@@ -24,12 +27,6 @@ namespace unilateral::openmp
     omp_set_max_active_levels(0);
   }
 } // namespace unilateral::openmp
-
-namespace
-{
-  using RegionBody = void (*)(void *);
-  using Parallel   = void (*)(RegionBody, void *, unsigned int, unsigned int);
-} // namespace
 
 /// libgomp's entry for `#pragma omp parallel` (GCC 4.9 on), interposed: see
 /// unilateral::openmp::run_regions_serially().
