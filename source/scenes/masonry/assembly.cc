@@ -137,6 +137,7 @@ namespace unilateral::masonry
                        dealii::update_quadrature_points)
     , dofs_per_cell(discretisation.fe->n_dofs_per_cell())
     , component(dofs_per_cell)
+    , volume_rhs(dofs_per_cell)
     , matrix(dofs_per_cell * dofs_per_cell)
     , rhs(dofs_per_cell)
   {
@@ -159,37 +160,11 @@ namespace unilateral::masonry
     fe_values.reinit(cell);
     const MaterialClass &material =
       loads.classes[loads.class_of_block[cell->material_id()]];
-    const double                 lambda = material.lambda();
-    const double                 mu     = material.mu();
-    const dealii::Tensor<1, dim> body_force =
-      material.density * loads.supports->gravity;
-
-    // Linear elasticity, as in step-8 (plane strain in 2D).
-    std::fill(matrix.begin(), matrix.end(), 0.0);
-    std::fill(rhs.begin(), rhs.end(), 0.0);
-    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-      {
-        const double JxW = fe_values.JxW(q);
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          {
-            const unsigned int            ci = component[i];
-            const dealii::Tensor<1, dim> &gi = fe_values.shape_grad(i, q);
-            for (unsigned int j = i; j < dofs_per_cell; ++j)
-              {
-                const unsigned int            cj = component[j];
-                const dealii::Tensor<1, dim> &gj = fe_values.shape_grad(j, q);
-                double value = gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
-                if (ci == cj)
-                  value += (gi * gj) * mu;
-                matrix[i * dofs_per_cell + j] += value * JxW;
-              }
-            if (body_force[ci] != 0)
-              rhs[i] += fe_values.shape_value(i, q) * body_force[ci] * JxW;
-          }
-      }
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      for (unsigned int j = 0; j < i; ++j)
-        matrix[i * dofs_per_cell + j] = matrix[j * dofs_per_cell + i];
+    if (fe_values.get_cell_similarity() !=
+          dealii::CellSimilarity::translation ||
+        integrated_material != &material)
+      integrate_volume_terms(material);
+    rhs = volume_rhs;
 
     if (traction_on.empty() || loads.supports->zero_traction)
       return;
@@ -234,6 +209,45 @@ namespace unilateral::masonry
                         fe_face_values.JxW(q);
           }
       }
+  }
+
+  template <int dim>
+  void
+  CellSystem<dim>::integrate_volume_terms(const MaterialClass &material)
+  {
+    const double                 lambda = material.lambda();
+    const double                 mu     = material.mu();
+    const dealii::Tensor<1, dim> body_force =
+      material.density * loads.supports->gravity;
+
+    // Linear elasticity, as in step-8 (plane strain in 2D).
+    std::fill(matrix.begin(), matrix.end(), 0.0);
+    std::fill(volume_rhs.begin(), volume_rhs.end(), 0.0);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int            ci = component[i];
+            const dealii::Tensor<1, dim> &gi = fe_values.shape_grad(i, q);
+            for (unsigned int j = i; j < dofs_per_cell; ++j)
+              {
+                const unsigned int            cj = component[j];
+                const dealii::Tensor<1, dim> &gj = fe_values.shape_grad(j, q);
+                double value = gi[ci] * gj[cj] * lambda + gi[cj] * gj[ci] * mu;
+                if (ci == cj)
+                  value += (gi * gj) * mu;
+                matrix[i * dofs_per_cell + j] += value * JxW;
+              }
+            if (body_force[ci] != 0)
+              volume_rhs[i] +=
+                fe_values.shape_value(i, q) * body_force[ci] * JxW;
+          }
+      }
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        matrix[i * dofs_per_cell + j] = matrix[j * dofs_per_cell + i];
+    integrated_material = &material;
   }
 
   template <int dim>
