@@ -513,7 +513,6 @@ namespace unilateral
     int
     run(const std::string                                   &parameter_file,
         std::ostream                                        &out,
-        const std::function<void()>                         &before_large_run,
         const std::function<void(const std::string &, int)> &after_failed_run,
         std::string                                         &failure_line)
     {
@@ -607,8 +606,6 @@ namespace unilateral
                                 one_line_message(error));
           throw;
         }
-      if (before_large_run && scene->large(parameter_file))
-        before_large_run();
       if (std::isfinite(memory::address_space_limit()) &&
           !blas::prepare_for_address_space_limit())
         {
@@ -721,7 +718,6 @@ namespace unilateral
     char                                               **argv,
     std::ostream                                        &out,
     std::ostream                                        &err,
-    const std::function<void()>                         &before_large_run,
     const std::function<void(const std::string &, int)> &after_failed_run)
   {
     try
@@ -761,8 +757,7 @@ namespace unilateral
                            std::to_string(argc - 1) +
                            " arguments; see unilateral --help");
         std::string failure_line;
-        const int   code =
-          run(first, out, before_large_run, after_failed_run, failure_line);
+        const int   code = run(first, out, after_failed_run, failure_line);
         if (!failure_line.empty())
           {
             out.flush();

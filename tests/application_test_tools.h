@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <iostream>
 #include <regex>
 #include <sstream>
@@ -62,8 +61,7 @@ namespace application_test
 
   /// `unilateral arguments...` through run_application.
   inline Result
-  run(const std::vector<std::string> &arguments,
-      const std::function<void()>    &before_large_run = {})
+  run(const std::vector<std::string> &arguments)
   {
     std::vector<std::string> storage = {"unilateral"};
     storage.insert(storage.end(), arguments.begin(), arguments.end());
@@ -72,10 +70,12 @@ namespace application_test
       argv.push_back(argument.data());
     std::ostringstream out, err;
     Result             result;
-    result.code = unilateral::run_application(
-      static_cast<int>(argv.size()), argv.data(), out, err, before_large_run);
-    result.out = out.str();
-    result.err = err.str();
+    result.code = unilateral::run_application(static_cast<int>(argv.size()),
+                                              argv.data(),
+                                              out,
+                                              err);
+    result.out  = out.str();
+    result.err  = err.str();
     return result;
   }
 

@@ -13,12 +13,6 @@ namespace unilateral
    * (one line on @p err), 2 if the solver did not converge, 3 on an
    * internal error (a defect of the program or a library's failure).
    *
-   * @p before_large_run, if given, is called for a run large enough to gain
-   * from glibc's huge pages (a wall of m 2^r >= 100 blocks per side, a plate
-   * of 128 x 128 elements or more, an LCP file of 20 MB or more) once the
-   * parameter file is read and the scene built, before anything is printed
-   * or written: main() restarts the program there with huge pages on.
-   *
    * @p after_failed_run, if given, is called with the message and the exit
    * code when the scene's run fails (after the parameter file was read),
    * before the failure is reported on @p err: under MPI the failure may be
@@ -31,6 +25,5 @@ namespace unilateral
     char                                               **argv,
     std::ostream                                        &out = std::cout,
     std::ostream                                        &err = std::cerr,
-    const std::function<void()>                         &before_large_run = {},
     const std::function<void(const std::string &, int)> &after_failed_run = {});
 } // namespace unilateral

@@ -61,15 +61,6 @@ namespace unilateral
         !value.empty(), "LCP", name, "''", "an LCP needs all three files");
   }
 
-  bool
-  LcpScene::large(const std::string &parameter_file) const
-  {
-    std::error_code error;
-    const auto      bytes = std::filesystem::file_size(
-      resolve_relative_to(parameter_file, matrix_file), error);
-    return !error && bytes >= 20000000;
-  }
-
   void
   LcpScene::assemble_system(RunContext &context)
   {

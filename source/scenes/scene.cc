@@ -264,9 +264,9 @@ namespace unilateral
   }
 
   void
-  Scene::pretouch(const RunContext &context, const double bytes) const
+  Scene::pretouch(const double bytes) const
   {
-    if (ranks::n_ranks() == 1 && large(context.parameter_file))
+    if (ranks::n_ranks() == 1)
       memory::pretouch_in_background(bytes);
   }
 

@@ -38,7 +38,7 @@ namespace unilateral::blas
    * build) the first time a thread needs one and keeps it; if the mapping
    * fails it retries forever, without a message (0.3.21): a run would hang
    * in its first factorisation near the limit. The program runs OpenBLAS
-   * on one thread under such a limit (app/unilateral.cc says why), whose
+   * on one thread under such a limit (base/start_up.h says why), whose
    * one buffer is mapped here while there is room. Returns false if there
    * is none (136 MB cannot be allocated). Does nothing with another BLAS.
    */

@@ -28,12 +28,6 @@ namespace unilateral
       return "'LCP/Matrix file' = " + matrix_file;
     }
 
-    /// A matrix file of 20 MB or more: the size of problem from which huge
-    /// pages gain more than the restart costs (measured: README.md, "How
-    /// the solve works").
-    bool
-    large(const std::string &parameter_file) const override;
-
   protected:
     /// Read the LCP from its files.
     void

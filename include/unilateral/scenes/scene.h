@@ -97,16 +97,6 @@ namespace unilateral
     size_parameters() const = 0;
 
     /**
-     * Whether the problem is large enough to gain more from huge pages (see
-     * app/unilateral.cc) than the program's restart costs (README.md, "How
-     * the solve works");
-     * @p parameter_file: where relative file names start. Known from the
-     * parameters, before anything is built.
-     */
-    virtual bool
-    large(const std::string &parameter_file) const = 0;
-
-    /**
      * One line for the user when the solver did not converge (the
      * application prints it on stderr): what the status means for this
      * scene's problem, and the solver's message.
@@ -192,14 +182,14 @@ namespace unilateral
 
     /**
      * Fault in @p bytes of memory on the second core while the scene builds
-     * its problem, for a serial run that large() calls large (under mpirun
-     * the ranks take every core): memory::pretouch_in_background() says
-     * why. A scene calls it as soon as it knows its size, with less than its
-     * solve's peak memory, so that the peak does not grow (below 1 GB
-     * nothing is touched: there the peak did grow).
+     * its problem, for a serial run (under mpirun the ranks take every
+     * core): memory::pretouch_in_background() says why. A scene calls it as
+     * soon as it knows its size, with less than its solve's peak memory, so
+     * that the peak does not grow (below 1 GB nothing is touched: there the
+     * peak did grow).
      */
     void
-    pretouch(const RunContext &context, double bytes) const;
+    pretouch(double bytes) const;
 
     /// The LCP the scene builds, and its solution.
     lcp::Problem  lcp_problem;

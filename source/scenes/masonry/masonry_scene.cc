@@ -255,7 +255,7 @@ namespace unilateral::masonry
     // r = 0; the rate: benchmarks/masonry_tables/README.md, "Pages faulted
     // in on the idle core").
     constexpr double pretouched_bytes_per_dof = 2000;
-    pretouch(context, pretouched_bytes_per_dof * problem_sizes.n_dofs);
+    pretouch(pretouched_bytes_per_dof * problem_sizes.n_dofs);
     context.stage(registered_name,
                   std::to_string(problem_sizes.n_dofs) +
                     " DOFs; detecting contacts");
@@ -927,24 +927,6 @@ namespace unilateral::masonry
              ": if the loads do any work along such a motion, " + structure +
              " has no equilibrium";
     return Scene::failure_description(report);
-  }
-
-  template <int dim>
-  bool
-  MasonryScene<dim>::large(const std::string &parameter_file) const
-  {
-    if (parameters.geometry.from_mesh_file)
-      {
-        std::error_code error;
-        const auto      bytes = std::filesystem::file_size(
-          resolve_relative_to(parameter_file, parameters.geometry.mesh_file),
-          error);
-        return !error &&
-               (bytes << (dim * parameters.geometry.refinement)) >= 5000000;
-      }
-    const long cells_per_side =
-      parameters.geometry.m * (1L << parameters.geometry.refinement);
-    return cells_per_side >= (dim == 2 ? 100 : 40);
   }
 
   template <int dim>

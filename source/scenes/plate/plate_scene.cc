@@ -94,7 +94,7 @@ namespace unilateral::plate
   }
 
   void
-  PlateScene::setup_system(RunContext &context)
+  PlateScene::setup_system(RunContext &)
   {
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
@@ -104,7 +104,7 @@ namespace unilateral::plate
     // benchmarks/plate_multigrid/README.md, "Pages faulted in on the idle
     // core").
     constexpr double pretouched_bytes_per_dof = 600;
-    pretouch(context, pretouched_bytes_per_dof * dof_handler.n_dofs());
+    pretouch(pretouched_bytes_per_dof * dof_handler.n_dofs());
 
     const dealii::ComponentMask clamped(
       {true, true, true, parameters.geometry.clamp_twist});

@@ -138,12 +138,6 @@ namespace unilateral::masonry
       return true;
     }
 
-    /// m 2^r >= 100, or a mesh file of 20 MB: smaller problems gain less
-    /// from huge pages than the restart costs (measured: README.md, "How
-    /// the solve works").
-    bool
-    large(const std::string &parameter_file) const override;
-
     /// After set_up(): n and n_c (the Table 2 counts) and the other sizes.
     const Sizes &
     sizes() const

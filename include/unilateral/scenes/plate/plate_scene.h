@@ -75,14 +75,6 @@ namespace unilateral::plate
     std::string
     failure_description(const lcp::Report &report) const override;
 
-    /// n1 n2 >= 128^2: from there on huge pages gain more than the
-    /// restart costs (measured: README.md, "How the solve works").
-    bool
-    large(const std::string &) const override
-    {
-      return parameters.geometry.n_x * parameters.geometry.n_y >= 128 * 128;
-    }
-
     /// One mesh of the coarse-mesh start (nested iteration), coarsest last.
     struct CoarseLevel
     {
