@@ -5,8 +5,9 @@
 // by GridOut as a Gmsh file (blocks with coincident but separate nodes,
 // boundaries by number: 1 left, 2 right, 3 base, 4 top), read back as a
 // mesh file: its joints and supports are all inclined, so every node's
-// frame in the change of variables is a rotation. Energy, closed contacts
-// and contact forces equal to 1e-10, and the displacements rotated back.
+// frame in the change of variables is a rotation. Energy, contacts carrying
+// a force and contact forces equal to 1e-10, and the displacements rotated
+// back.
 #include <unilateral/scenes/masonry/layout.h>
 #include <unilateral/scenes/masonry/mesh.h>
 
@@ -69,6 +70,23 @@ namespace
         << elements.str() << "$EndElements\n";
   }
 
+  /// The contacts carrying a force (above 1e-10 of the largest). Which of
+  /// the others are closed is not the answer's to say: a contact closed
+  /// with no force (stack bond's top head joints at even m) may as well be
+  /// open where it alone holds a block (the program says so), and the
+  /// solver counts it by its path, which rounding decides.
+  std::size_t
+  contacts_carrying_a_force(const Run &run)
+  {
+    double largest_force = 0;
+    for (const auto &r : run.scene->constraint_results())
+      largest_force = std::max(largest_force, r.contact_force);
+    std::size_t count = 0;
+    for (const auto &r : run.scene->constraint_results())
+      count += r.contact_force > 1e-10 * largest_force;
+    return count;
+  }
+
   void
   compare(const std::string &geometry, const unsigned int m)
   {
@@ -108,8 +126,9 @@ namespace
               << "; energy equal to 1e-10: "
               << yes_no(std::abs(rotated.report.energy - energy) <=
                         1e-10 * std::abs(energy))
-              << "; closed contacts equal: "
-              << yes_no(upright.report.n_active == rotated.report.n_active)
+              << "; contacts carrying a force equal: "
+              << yes_no(contacts_carrying_a_force(upright) ==
+                        contacts_carrying_a_force(rotated))
               << "\n";
 
     std::vector<double> a, b;

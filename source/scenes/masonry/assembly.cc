@@ -160,10 +160,12 @@ namespace unilateral::masonry
     fe_values.reinit(cell);
     const MaterialClass &material =
       loads.classes[loads.class_of_block[cell->material_id()]];
-    if (fe_values.get_cell_similarity() !=
-          dealii::CellSimilarity::translation ||
-        integrated_material != &material)
-      integrate_volume_terms(material);
+    if (integrated_material != &material ||
+        !cell->is_translation_of(integrated_cell))
+      {
+        integrate_volume_terms(material);
+        integrated_cell = cell;
+      }
     rhs = volume_rhs;
 
     if (traction_on.empty() || loads.supports->zero_traction)
