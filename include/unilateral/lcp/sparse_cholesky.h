@@ -16,7 +16,8 @@ namespace unilateral::lcp
    * every numeric factorisation of a matrix with the same pattern reuses it.
    *
    * Matrices are given with both triangles stored; CHOLMOD reads the upper
-   * one. factorise() counts its work in the Counters it is given; solves are
+   * one, so unless distributed() the upper triangle alone will do.
+   * factorise() counts its work in the Counters it is given; solves are
    * counted by the caller (a factor may be shared with a later solve).
    *
    * Why CHOLMOD's C API and not a deal.II wrapper (SparseDirectUMFPACK, the
