@@ -350,6 +350,17 @@ namespace unilateral::masonry
   std::pair<unsigned int, double>
   DirectionClasses<dim>::classify(const Direction<dim> &normal)
   {
+    // The last call's: classes are only ever made here, so the same normal
+    // gets the same answer until the next call.
+    if (!last.has_value() || last->first != normal)
+      last.emplace(normal, classify_anew(normal));
+    return last->second;
+  }
+
+  template <int dim>
+  std::pair<unsigned int, double>
+  DirectionClasses<dim>::classify_anew(const Direction<dim> &normal)
+  {
     double sign = 1;
     for (unsigned int c = 0; c < dim; ++c)
       if (std::abs(normal[c]) > 1e-8)

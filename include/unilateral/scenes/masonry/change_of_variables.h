@@ -3,6 +3,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -123,6 +124,16 @@ namespace unilateral::masonry
     /// The classes by their d on a grid of spacing 10 tolerance (a cell
     /// may hold several: directions further apart than the tolerance).
     std::map<std::array<long, dim>, std::vector<unsigned int>> index;
+
+    /// The last normal classified and its class: most walls classify one
+    /// normal many times over (every node of a joint), and each
+    /// classification probes the grid 18 times.
+    std::optional<std::pair<Direction<dim>, std::pair<unsigned int, double>>>
+      last;
+
+    /// classify() without the memory of the last call.
+    std::pair<unsigned int, double>
+    classify_anew(const Direction<dim> &normal);
 
     /// The nearest class within the tolerance of @p d (-1 if none) and
     /// its distance.
