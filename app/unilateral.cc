@@ -21,14 +21,19 @@ main(int, char **argv)
   if (!start_up::launched_by_mpi())
     start_up::huge_pages();
   const std::string program =
-    start_up::beside_this_executable("unilateral-run");
+    start_up::beside_this_executable("unilateral-run", argv[0]);
   if (!program.empty())
     execv(program.c_str(), argv);
+  // An installation without the program beside the launcher (a copy of
+  // the launcher alone): exit 1, as for other input the user can mend.
   std::cerr << "unilateral: error: cannot start the program '"
-            << (program.empty() ? "unilateral-run" : program)
-            << "' (it is built and installed beside this launcher): "
-            << (program.empty() ? "the path of this executable is unknown" :
+            << (program.empty() ? "unilateral-run" : program) << "': "
+            << (program.empty() ? "the folder of this executable is unknown" :
                                   std::strerror(errno))
+            << "; 'unilateral' is a launcher that starts 'unilateral-run' from "
+               "its own folder: keep the two together (copy both, or link to "
+               "the launcher with a symbolic link), or run unilateral-run "
+               "directly"
             << std::endl;
-  return 3;
+  return 1;
 }

@@ -49,14 +49,16 @@ namespace unilateral::start_up
   }
 
   std::string
-  beside_this_executable(const std::string &name)
+  beside_this_executable(const std::string &name, const char *argv0)
   {
     std::vector<char> path(4096);
     const ssize_t     length =
       readlink("/proc/self/exe", path.data(), path.size() - 1);
-    if (length <= 0 || static_cast<std::size_t>(length) >= path.size() - 1)
-      return "";
-    const std::string executable(path.data(), static_cast<std::size_t>(length));
+    std::string executable;
+    if (length > 0 && static_cast<std::size_t>(length) < path.size() - 1)
+      executable.assign(path.data(), static_cast<std::size_t>(length));
+    else if (argv0 != nullptr)
+      executable = argv0; // a path if it holds a slash (else found on PATH)
     const std::size_t slash = executable.rfind('/');
     return slash == std::string::npos ? "" :
                                         executable.substr(0, slash + 1) + name;

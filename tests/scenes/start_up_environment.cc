@@ -113,6 +113,7 @@ main()
   const std::string self(path.data(), length > 0 ? std::size_t(length) : 0);
   const std::string folder = self.substr(0, self.rfind('/') + 1);
   verdict("the program's path is in this executable's folder",
-          !self.empty() && start_up::beside_this_executable("unilateral-run") ==
-                             folder + "unilateral-run");
+          !self.empty() &&
+            start_up::beside_this_executable("unilateral-run", "x/y") ==
+              folder + "unilateral-run");
 }

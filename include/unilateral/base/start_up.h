@@ -47,8 +47,9 @@ namespace unilateral::start_up
   bool
   huge_pages();
 
-  /// The path of @p name in the folder of the running executable (empty if
-  /// the system does not say where that is).
+  /// The path of @p name in the folder of the running executable: the one
+  /// /proc/self/exe names (through symbolic links), or where there is no
+  /// /proc the folder of @p argv0 if that is a path; empty if neither says.
   std::string
-  beside_this_executable(const std::string &name);
+  beside_this_executable(const std::string &name, const char *argv0);
 } // namespace unilateral::start_up
