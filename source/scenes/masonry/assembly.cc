@@ -120,6 +120,30 @@ namespace unilateral::masonry
     }
   } // namespace
 
+  namespace
+  {
+    /// Whether @p cell is @p other shifted: as many vertices, and each one's
+    /// offset from the first equal to @p other's to 1e-12 of the cell's
+    /// diameter. (deal.II's is_translation_of allows 1e-12 of the shift,
+    /// which between far-apart cells is far more than rounding.)
+    template <int dim>
+    bool
+    translation_of(
+      const typename dealii::Triangulation<dim>::cell_iterator &cell,
+      const typename dealii::Triangulation<dim>::cell_iterator &other)
+    {
+      if (cell->n_vertices() != other->n_vertices())
+        return false;
+      const double tolerance = 1e-12 * cell->diameter();
+      for (unsigned int i = 1; i < cell->n_vertices(); ++i)
+        if (((cell->vertex(i) - cell->vertex(0)) -
+             (other->vertex(i) - other->vertex(0)))
+              .norm() > tolerance)
+          return false;
+      return true;
+    }
+  } // namespace
+
   template <int dim>
   CellSystem<dim>::CellSystem(const Discretisation<dim> &discretisation,
                               const LoadData<dim>       &loads)
@@ -161,7 +185,7 @@ namespace unilateral::masonry
     const MaterialClass &material =
       loads.classes[loads.class_of_block[cell->material_id()]];
     if (integrated_material != &material ||
-        !cell->is_translation_of(integrated_cell))
+        !translation_of<dim>(cell, integrated_cell))
       {
         integrate_volume_terms(material);
         integrated_cell = cell;

@@ -31,15 +31,18 @@ namespace unilateral::masonry
    * reactions and the tearing into blocks sum.
    *
    * A cell that is a translation of the last one integrated (its vertices
-   * in the same order, their differences equal to 1e-12 of the shift:
-   * deal.II's test), of the same material, has the same stiffness and body
-   * force, as the mapping is (bi/tri)linear: they are kept. On the walls
-   * nearly every cell is one, and the volume integrals were most of the
-   * assembly's and the reactions' time. This is what FEValues's own
-   * CellSimilarity does, but deal.II turns that off whenever it may run on
-   * several threads (as a serial run here does), so the test is made here.
-   * The terms kept differ from those the cell's own vertices give by
-   * rounding only.
+   * in the same order, their offsets from the first equal to 1e-12 of its
+   * diameter), of the same material, has the same stiffness and body force,
+   * as the mapping is (bi/tri)linear: they are kept. On the walls nearly
+   * every cell is one, and the volume integrals were most of the assembly's
+   * and the reactions' time. This is what FEValues's own CellSimilarity
+   * does, but deal.II turns that off whenever it may run on several threads
+   * (as a serial run here does), and its test allows 1e-12 of the shift
+   * between the cells, not of their size; so the test is made here. The
+   * terms kept differ from those the cell's own vertices give by 1e-12
+   * relative at most: rounding on the built-in walls, and on a mesh file
+   * also the noise of its vertices within the tolerance (a far smaller
+   * change of the geometry than the discretisation's).
    */
   template <int dim>
   class CellSystem
