@@ -20,10 +20,10 @@
  * directly rather than by the unilateral command, the program restarts
  * itself once under an address-space limit (start_up.h says why; the
  * command sets that before it starts the program), and runs without huge
- * pages unless GLIBC_TUNABLES asks for them. Every rank reads the same file and
- * fails alike on bad input; rank 0 alone prints and writes. A failure during
- * the run (after the file is read) ends every rank through MPI_Abort, as it may
- * be one rank's alone.
+ * pages unless GLIBC_TUNABLES asks for them. Every rank reads the same
+ * file and fails alike on bad input; rank 0 alone prints and writes. A
+ * failure during the run (after the file is read) ends every rank through
+ * MPI_Abort, as it may be one rank's alone.
  */
 int
 main(int argc, char **argv)

@@ -181,12 +181,12 @@ namespace unilateral::masonry
   CellSystem<dim>::reinit(
     const typename dealii::DoFHandler<dim>::active_cell_iterator &cell)
   {
-    fe_values.reinit(cell);
     const MaterialClass &material =
       loads.classes[loads.class_of_block[cell->material_id()]];
     if (integrated_material != &material ||
         !translation_of<dim>(cell, integrated_cell))
       {
+        fe_values.reinit(cell);
         integrate_volume_terms(material);
         integrated_cell = cell;
       }

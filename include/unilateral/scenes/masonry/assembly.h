@@ -62,7 +62,8 @@ namespace unilateral::masonry
       const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
       const FaceRegionRule<dim>                                    &part);
 
-    /// The stiffness and the body force of the cell fe_values is on.
+    /// The stiffness and the body force of the cell fe_values was last
+    /// reinitialised on.
     void
     integrate_volume_terms(const MaterialClass &material);
 
