@@ -1,8 +1,9 @@
+#include <unilateral/base/memory.h>
 #include <unilateral/base/start_up.h>
 
-#include <sys/resource.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -22,8 +23,7 @@ namespace unilateral::start_up
   bool
   one_blas_thread_under_address_space_limit()
   {
-    rlimit limit{};
-    if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+    if (!std::isfinite(memory::address_space_limit()))
       return false;
     // OpenBLAS's own order: OPENBLAS_NUM_THREADS, else OMP_NUM_THREADS;
     // unset, empty or 0 mean a thread per core.

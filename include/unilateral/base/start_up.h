@@ -5,11 +5,12 @@
 /**
  * Settings that glibc and OpenBLAS read only as a process starts, made in
  * the environment before the program proper is started. Plain C++ and the
- * C library only: the launcher (app/unilateral.cc) makes them and then
- * starts the program (app/unilateral_run.cc), so that deal.II's ~200
- * shared libraries are loaded once, with the settings in force. A program
- * that made them for itself would have to start again after loading them
- * (a restart cost 0.3-0.4 s, more than a small run takes).
+ * C library only (and memory.h, likewise): the launcher
+ * (app/unilateral.cc) makes them and then starts the program
+ * (app/unilateral_run.cc), so that deal.II's ~200 shared libraries are
+ * loaded once, with the settings in force. A program that made them for
+ * itself would have to start again after loading them (a restart cost
+ * 0.3-0.4 s, more than a small run takes).
  */
 namespace unilateral::start_up
 {
