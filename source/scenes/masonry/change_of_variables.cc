@@ -350,11 +350,17 @@ namespace unilateral::masonry
   std::pair<unsigned int, double>
   DirectionClasses<dim>::classify(const Direction<dim> &normal)
   {
-    // The last call's: classes are only ever made here, so the same normal
-    // gets the same answer until the next call.
-    if (!last.has_value() || last->first != normal)
-      last.emplace(normal, classify_anew(normal));
-    return last->second;
+    for (const auto &[seen, answer] : recent)
+      if (seen == normal)
+        return answer;
+    const std::size_t n_classes = directions.size();
+    const auto        answer    = classify_anew(normal);
+    if (directions.size() != n_classes) // a class made: forget the others
+      recent.clear();
+    if (recent.size() == max_recent)
+      recent.erase(recent.begin());
+    recent.emplace_back(normal, answer);
+    return answer;
   }
 
   template <int dim>
@@ -517,6 +523,8 @@ namespace unilateral::masonry
           roller_row[edge.a * dim + row_of_class(edge.a, k)] = 1;
     variable.assign(n_dofs, -1);
     std::vector<int> row_variable(n_nodes * dim, -1);
+    // The frame row (a dim + r) of each variable.
+    std::vector<std::size_t> slot_of_variable;
     {
       std::vector<std::pair<std::size_t, unsigned int>> row_of_dof(n_dofs,
                                                                    {none, 0});
@@ -532,6 +540,7 @@ namespace unilateral::masonry
             continue;
           variable[i]               = static_cast<int>(n_variables++);
           row_variable[a * dim + r] = variable[i];
+          slot_of_variable.push_back(a * dim + r);
         }
     }
 
@@ -588,33 +597,39 @@ namespace unilateral::masonry
       }
 
     // u_{a,c} = sum_r T_a^-1[c][r] v_{a,r}; held nodes are constants.
+    // Stored flat (term_start, terms), counted first and then written: a
+    // vector per DOF would be a million small allocations.
     offsets.assign(n_dofs, 0.0);
-    std::vector<std::vector<Term>> dof_terms(n_dofs);
+    term_start.assign(n_dofs + 1, 0);
+    const auto for_each_term =
+      [&](const std::size_t a, const unsigned int c, const auto &action) {
+        if (held_index[a] < 0)
+          for (unsigned int r = 0; r < dim; ++r)
+            if (const double factor = frames[a].inverse[c][r]; factor != 0)
+              for (const Term &t : row_terms[a * dim + r])
+                action(Term{t.variable, factor * t.coefficient});
+      };
+    for (std::size_t a = 0; a < n_nodes; ++a)
+      for (unsigned int c = 0; c < dim; ++c)
+        for_each_term(a, c, [&](const Term &) {
+          ++term_start[nodes[a][c] + 1];
+        });
+    for (DofIndex i = 0; i < n_dofs; ++i)
+      term_start[i + 1] += term_start[i];
+    terms.resize(term_start.back());
     for (std::size_t a = 0; a < n_nodes; ++a)
       for (unsigned int c = 0; c < dim; ++c)
         {
-          const DofIndex dof = nodes[a][c];
+          const DofIndex dof  = nodes[a][c];
+          std::size_t    next = term_start[dof];
+          for_each_term(a, c, [&](const Term &t) { terms[next++] = t; });
           if (held_index[a] >= 0)
-            {
-              offsets[dof] = held[held_index[a]].value[c];
-              continue;
-            }
-          for (unsigned int r = 0; r < dim; ++r)
-            {
-              const double factor = frames[a].inverse[c][r];
-              if (factor == 0)
-                continue;
-              for (const Term &t : row_terms[a * dim + r])
-                dof_terms[dof].push_back({t.variable, factor * t.coefficient});
-              offsets[dof] += factor * row_constant[a * dim + r];
-            }
+            offsets[dof] = held[held_index[a]].value[c];
+          else
+            for (unsigned int r = 0; r < dim; ++r)
+              if (const double factor = frames[a].inverse[c][r]; factor != 0)
+                offsets[dof] += factor * row_constant[a * dim + r];
         }
-    term_start.assign(n_dofs + 1, 0);
-    for (DofIndex i = 0; i < n_dofs; ++i)
-      term_start[i + 1] = term_start[i] + dof_terms[i].size();
-    terms.reserve(term_start.back());
-    for (DofIndex i = 0; i < n_dofs; ++i)
-      terms.insert(terms.end(), dof_terms[i].begin(), dof_terms[i].end());
     any_offset = std::any_of(offsets.begin(), offsets.end(), [](double x) {
       return x != 0;
     });
@@ -632,31 +647,42 @@ namespace unilateral::masonry
           }
 
     // The rows of C~: a frame row times u, or for the owner of a
-    // constraint its gap.
-    rows.assign(n_variables, {});
-    for (std::size_t a = 0; a < n_nodes; ++a)
-      if (held_index[a] < 0)
-        for (unsigned int r = 0; r < dim; ++r)
-          if (const int t = row_variable[a * dim + r]; t >= 0)
-            for (unsigned int c = 0; c < dim; ++c)
-              if (frames[a].rows[r][c] != 0)
-                rows[t].emplace_back(nodes[a][c], frames[a].rows[r][c]);
+    // constraint its gap. Flat as the terms above.
+    std::vector<int> gap_of(n_variables, -1);
     for (std::size_t k = 0; k < constraints.size(); ++k)
+      gap_of[constraint_variable[k]] = static_cast<int>(k);
+    const auto for_each_entry = [&](const unsigned int t, const auto &action) {
+      if (gap_of[t] >= 0)
+        {
+          const UnilateralConstraint<dim> &constraint = constraints[gap_of[t]];
+          const bool joint = constraint.kind == ConstraintKind::joint;
+          for (unsigned int c = 0; c < dim; ++c)
+            if (const double n = constraint.normal[c]; n != 0)
+              {
+                if (joint)
+                  action(nodes[constraint.upper][c], n);
+                action(nodes[constraint.lower][c], joint ? -n : n);
+              }
+          return;
+        }
+      const std::size_t a = slot_of_variable[t] / dim;
+      const std::size_t r = slot_of_variable[t] % dim;
+      for (unsigned int c = 0; c < dim; ++c)
+        if (frames[a].rows[r][c] != 0)
+          action(nodes[a][c], frames[a].rows[r][c]);
+    };
+    row_start.assign(n_variables + 1, 0);
+    for (unsigned int t = 0; t < n_variables; ++t)
+      for_each_entry(t, [&](DofIndex, double) { ++row_start[t + 1]; });
+    for (unsigned int t = 0; t < n_variables; ++t)
+      row_start[t + 1] += row_start[t];
+    row_entries.resize(row_start.back());
+    for (unsigned int t = 0; t < n_variables; ++t)
       {
-        const UnilateralConstraint<dim> &constraint = constraints[k];
-        auto                            &gap = rows[constraint_variable[k]];
-        gap.clear();
-        for (unsigned int c = 0; c < dim; ++c)
-          if (constraint.normal[c] != 0)
-            {
-              if (constraint.kind == ConstraintKind::joint)
-                gap.emplace_back(nodes[constraint.upper][c],
-                                 constraint.normal[c]);
-              gap.emplace_back(nodes[constraint.lower][c],
-                               constraint.kind == ConstraintKind::joint ?
-                                 -constraint.normal[c] :
-                                 constraint.normal[c]);
-            }
+        std::size_t next = row_start[t];
+        for_each_entry(t, [&](const DofIndex dof, const double coefficient) {
+          row_entries[next++] = {dof, coefficient};
+        });
       }
   }
 

@@ -9,6 +9,8 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -305,6 +307,19 @@ namespace unilateral::masonry
       std::vector<Group> groups;
     };
 
+    /// The faces behind one end of a constraint (one to a few), sorted,
+    /// each once: a small vector rather than a std::set, as a wall has
+    /// hundreds of thousands of constraints.
+    using FaceList = boost::container::small_vector<std::size_t, 2>;
+
+    void
+    add_face(FaceList &list, const std::size_t face)
+    {
+      const auto at = std::lower_bound(list.begin(), list.end(), face);
+      if (at == list.end() || *at != face)
+        list.insert(at, face);
+    }
+
     /// Per node, what its supports' faces say.
     template <int dim>
     struct NodeConditions
@@ -364,8 +379,10 @@ namespace unilateral::masonry
           }
         for (std::size_t f = 0; f < faces.size(); ++f)
           if (included(f))
-            for_each_cell(box(faces[f]),
-                          [&](const Cell &cell) { cells[cell].push_back(f); });
+            for_each_cell(box(faces[f]), [&](const Cell &cell) {
+              cells.emplace_back(cell, f);
+            });
+        std::sort(cells.begin(), cells.end());
       }
 
       bool
@@ -381,10 +398,15 @@ namespace unilateral::masonry
       for_each_near(const FaceRecord<dim> &face, const Action &action) const
       {
         for_each_cell(box(face), [&](const Cell &cell) {
-          const auto list = cells.find(cell);
-          if (list != cells.end())
-            for (const std::size_t f : list->second)
-              action(f);
+          for (auto at = std::lower_bound(cells.begin(),
+                                          cells.end(),
+                                          cell,
+                                          [](const auto &entry, const Cell &c) {
+                                            return entry.first < c;
+                                          });
+               at != cells.end() && at->first == cell;
+               ++at)
+            action(at->second);
         });
       }
 
@@ -429,9 +451,12 @@ namespace unilateral::masonry
           }
       }
 
-      double                                   near;
-      double                                   spacing;
-      std::map<Cell, std::vector<std::size_t>> cells;
+      double near;
+      double spacing;
+      // (grid cell, face) for every cell each face's box meets, sorted:
+      // the faces of a cell in their order (a sort, not a map: a wall has
+      // hundreds of thousands of faces).
+      std::vector<std::pair<Cell, std::size_t>> cells;
     };
 
     /**
@@ -781,8 +806,20 @@ namespace unilateral::masonry
       return weight;
     };
 
-    // Supports, node by node.
-    std::vector<NodeConditions<dim>>             conditions(n_nodes);
+    // Supports, node by node: conditions only for the nodes that have one
+    // (a wall's boundary), found through condition_of.
+    constexpr auto no_condition = std::numeric_limits<unsigned int>::max();
+    std::vector<unsigned int>        condition_of(n_nodes, no_condition);
+    std::vector<NodeConditions<dim>> conditions;
+    const auto conditions_at = [&](const unsigned int node) -> auto &
+    {
+      if (condition_of[node] == no_condition)
+        {
+          condition_of[node] = static_cast<unsigned int>(conditions.size());
+          conditions.emplace_back();
+        }
+      return conditions[condition_of[node]];
+    };
     std::map<const Support<dim> *, unsigned int> support_index;
     for (const Support<dim> &support : supports.list)
       if (support.kind != Kind::traction)
@@ -816,7 +853,7 @@ namespace unilateral::masonry
                 continue;
               acting.insert(support);
               const unsigned int   index = support_index.at(support);
-              NodeConditions<dim> &c     = conditions[node];
+              NodeConditions<dim> &c     = conditions_at(node);
               if (support->kind == Kind::held)
                 {
                   std::array<double, dim> value{};
@@ -871,12 +908,14 @@ namespace unilateral::masonry
       std::array<double, dim> normal; ///< into the block
       unsigned int            support;
       double                  bound;
-      std::set<std::size_t>   faces;
+      FaceList                faces;
     };
     std::vector<SignoriniRow> signorini_rows;
     for (std::size_t node = 0; node < n_nodes; ++node)
       {
-        const NodeConditions<dim> &c = conditions[node];
+        if (condition_of[node] == no_condition)
+          continue;
+        const NodeConditions<dim> &c = conditions[condition_of[node]];
         if (c.held_support >= 0)
           {
             result.held.push_back(
@@ -947,9 +986,9 @@ namespace unilateral::masonry
                            "cell, counts as 0)";
                 throw InputError(message.str());
               }
-            std::set<std::size_t> support_faces;
+            FaceList support_faces;
             for (const std::size_t item : group.items)
-              support_faces.insert(c.signorini_face[item]);
+              add_face(support_faces, c.signorini_face[item]);
             signorini_rows.push_back({static_cast<unsigned int>(node),
                                       as_array<dim>(-n),
                                       c.signorini_support[group.items.front()],
@@ -975,7 +1014,7 @@ namespace unilateral::masonry
                result.node_dofs[b.node][main_component(b.normal)];
       });
     // The faces behind each end of each constraint (for the weights).
-    std::vector<std::array<std::set<std::size_t>, 2>> constraint_faces;
+    std::vector<std::array<FaceList, 2>> constraint_faces;
     for (const SignoriniRow &row : signorini_rows)
       {
         result.constraints.push_back(
@@ -1291,10 +1330,11 @@ namespace unilateral::masonry
     // decides which node is the lower one.
     struct JointRow
     {
-      UnilateralConstraint<dim>            row;
-      std::array<std::set<std::size_t>, 2> faces;
+      UnilateralConstraint<dim> row;
+      std::array<FaceList, 2>   faces;
     };
     std::vector<JointRow> joints;
+    joints.reserve(joint_pairs.size()); // one per pair, as a rule
     // By pair, each pair's records in the order they were found.
     std::stable_sort(joint_pairs.begin(),
                      joint_pairs.end(),
@@ -1330,7 +1370,9 @@ namespace unilateral::masonry
             // or a roller along it) can neither open nor close: its row
             // would repeat the supports' (a dependent row), so it goes.
             auto held_along = [&](const unsigned int node) {
-              const NodeConditions<dim> &c = conditions[node];
+              if (condition_of[node] == no_condition)
+                return false;
+              const NodeConditions<dim> &c = conditions[condition_of[node]];
               if (c.held_support >= 0)
                 return true;
               for (const auto &roller : c.rollers.groups)
@@ -1345,8 +1387,10 @@ namespace unilateral::masonry
             for (const std::size_t r : group.items)
               for (const std::size_t f :
                    {record(r).face_first, record(r).face_second})
-                joint.faces[faces[f].block == result.node_block[lower] ? 0 : 1]
-                  .insert(f);
+                add_face(
+                  joint
+                    .faces[faces[f].block == result.node_block[lower] ? 0 : 1],
+                  f);
             joints.push_back(std::move(joint));
           }
       }
@@ -1367,6 +1411,7 @@ namespace unilateral::masonry
                      [&](const std::size_t a, const std::size_t b) {
                        return joint_key[a] < joint_key[b];
                      });
+    constraint_faces.reserve(constraint_faces.size() + joints.size());
     for (const std::size_t j : joint_order)
       {
         JointRow &joint = joints[j];

@@ -1,9 +1,10 @@
 #pragma once
 
+#include <deal.II/base/array_view.h>
+
 #include <array>
 #include <functional>
 #include <map>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -125,13 +126,17 @@ namespace unilateral::masonry
     /// may hold several: directions further apart than the tolerance).
     std::map<std::array<long, dim>, std::vector<unsigned int>> index;
 
-    /// The last normal classified and its class: most walls classify one
-    /// normal many times over (every node of a joint), and each
-    /// classification probes the grid 18 times.
-    std::optional<std::pair<Direction<dim>, std::pair<unsigned int, double>>>
-      last;
+    /// The normals classified since a class was last made, with their
+    /// classes, the latest last (at most max_recent): a wall classifies a
+    /// few normals (its faces' four or six) many times over, alternating,
+    /// and each classification probes the grid 18 times. A class is a
+    /// function of the normal and the classes, so these hold until a
+    /// class is made.
+    std::vector<std::pair<Direction<dim>, std::pair<unsigned int, double>>>
+                                 recent;
+    static constexpr std::size_t max_recent = 8;
 
-    /// classify() without the memory of the last call.
+    /// classify() without the memory of the recent calls.
     std::pair<unsigned int, double>
     classify_anew(const Direction<dim> &normal);
 
@@ -256,20 +261,23 @@ namespace unilateral::masonry
     /// gap is n . (u_upper - u_lower) or n . u, any other variable its
     /// node's frame row times u). For the dual methods, which work in the
     /// physical DOFs.
-    const std::vector<std::pair<DofIndex, double>> &
+    dealii::ArrayView<const std::pair<DofIndex, double>>
     row(const unsigned int variable) const
     {
-      return rows[variable];
+      return {row_entries.data() + row_start[variable],
+              row_start[variable + 1] - row_start[variable]};
     }
 
   private:
-    unsigned int                                          n_variables = 0;
-    std::vector<int>                                      variable;
-    std::vector<int>                                      constraint_variable;
-    std::vector<std::size_t>                              term_start;
-    std::vector<Term>                                     terms;
-    std::vector<double>                                   offsets;
-    bool                                                  any_offset = false;
-    std::vector<std::vector<std::pair<DofIndex, double>>> rows;
+    unsigned int             n_variables = 0;
+    std::vector<int>         variable;
+    std::vector<int>         constraint_variable;
+    std::vector<std::size_t> term_start;
+    std::vector<Term>        terms;
+    std::vector<double>      offsets;
+    bool                     any_offset = false;
+    /// Row t of C~: row_entries[row_start[t], row_start[t + 1]).
+    std::vector<std::size_t>                 row_start;
+    std::vector<std::pair<DofIndex, double>> row_entries;
   };
 } // namespace unilateral::masonry
