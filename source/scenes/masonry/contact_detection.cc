@@ -1334,13 +1334,18 @@ namespace unilateral::masonry
       std::array<FaceList, 2>   faces;
     };
     std::vector<JointRow> joints;
-    joints.reserve(joint_pairs.size()); // one per pair, as a rule
     // By pair, each pair's records in the order they were found.
     std::stable_sort(joint_pairs.begin(),
                      joint_pairs.end(),
                      [](const auto &a, const auto &b) {
                        return a.first < b.first;
                      });
+    // One joint per pair, as a rule (a pair has two records or more: each
+    // face of the pair finds it).
+    std::size_t n_pairs = 0;
+    for (std::size_t r = 0; r < joint_pairs.size(); ++r)
+      n_pairs += r == 0 || joint_pairs[r].first != joint_pairs[r - 1].first;
+    joints.reserve(n_pairs);
     for (std::size_t first = 0, end = 0; first < joint_pairs.size();
          first = end)
       {
