@@ -118,10 +118,7 @@ namespace unilateral::masonry
         }
       std::fill(A.valuePtr(), A.valuePtr() + entries, 0.0);
     }
-  } // namespace
 
-  namespace
-  {
     /// Whether @p cell is @p other shifted: as many vertices, and each one's
     /// offset from the first equal to @p other's to 1e-12 of the cell's
     /// diameter. (deal.II's is_translation_of allows 1e-12 of the shift,

@@ -601,18 +601,19 @@ namespace unilateral::masonry
     // vector per DOF would be a million small allocations.
     offsets.assign(n_dofs, 0.0);
     term_start.assign(n_dofs + 1, 0);
-    const auto for_each_term =
+    // The frame rows r of u_{a,c}'s expansion (slot a dim + r) and their
+    // factors T_a^-1[c][r]: none for a held node.
+    const auto for_each_row =
       [&](const std::size_t a, const unsigned int c, const auto &action) {
         if (held_index[a] < 0)
           for (unsigned int r = 0; r < dim; ++r)
             if (const double factor = frames[a].inverse[c][r]; factor != 0)
-              for (const Term &t : row_terms[a * dim + r])
-                action(Term{t.variable, factor * t.coefficient});
+              action(a * dim + r, factor);
       };
     for (std::size_t a = 0; a < n_nodes; ++a)
       for (unsigned int c = 0; c < dim; ++c)
-        for_each_term(a, c, [&](const Term &) {
-          ++term_start[nodes[a][c] + 1];
+        for_each_row(a, c, [&](const std::size_t slot, double) {
+          term_start[nodes[a][c] + 1] += row_terms[slot].size();
         });
     for (DofIndex i = 0; i < n_dofs; ++i)
       term_start[i + 1] += term_start[i];
@@ -622,13 +623,13 @@ namespace unilateral::masonry
         {
           const DofIndex dof  = nodes[a][c];
           std::size_t    next = term_start[dof];
-          for_each_term(a, c, [&](const Term &t) { terms[next++] = t; });
           if (held_index[a] >= 0)
             offsets[dof] = held[held_index[a]].value[c];
-          else
-            for (unsigned int r = 0; r < dim; ++r)
-              if (const double factor = frames[a].inverse[c][r]; factor != 0)
-                offsets[dof] += factor * row_constant[a * dim + r];
+          for_each_row(a, c, [&](const std::size_t slot, const double factor) {
+            for (const Term &t : row_terms[slot])
+              terms[next++] = {t.variable, factor * t.coefficient};
+            offsets[dof] += factor * row_constant[slot];
+          });
         }
     any_offset = std::any_of(offsets.begin(), offsets.end(), [](double x) {
       return x != 0;
