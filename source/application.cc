@@ -136,7 +136,8 @@ namespace unilateral
                           "'..'); empty takes the parameter file's name "
                           "without extension. A run first removes from it "
                           "the files an earlier run wrote there "
-                          "(summary.json, parameters.prm, the scenes' "
+                          "(summary.json, parameters.prm (.json, .xml), "
+                          "the scenes' "
                           "solution.pvd, solution_NNN.vtu and .pvtu with "
                           "their pieces, plate.* and nodes.* VTU and PVD "
                           "files, u.txt, lambda.txt, active_set.txt, "
@@ -247,6 +248,8 @@ namespace unilateral
     {
       const std::set<std::string> names = {"summary.json",
                                            "parameters.prm",
+                                           "parameters.json",
+                                           "parameters.xml",
                                            "u.txt",
                                            "lambda.txt",
                                            "active_set.txt",
@@ -369,12 +372,13 @@ namespace unilateral
                          ": cannot create '" + directory.string() +
                          "': " + error.message());
       remove_earlier_outputs(directory, parameter_file);
-      // A parameters.prm left now is the file being read (a rerun from the
-      // copy), which is not copied onto itself.
-      if (!std::filesystem::exists(directory / "parameters.prm"))
-        std::filesystem::copy_file(parameter_file,
-                                   directory / "parameters.prm",
-                                   error);
+      // The copy keeps the file's form (parameters.json for a JSON file),
+      // which the parser tells by the ending. One left now is the file
+      // being read (a rerun from the copy), not copied onto itself.
+      const std::filesystem::path copy =
+        directory / ("parameters." + parameter_file_kind(parameter_file));
+      if (!std::filesystem::exists(copy))
+        std::filesystem::copy_file(parameter_file, copy, error);
       if (error)
         throw InputError("cannot copy the parameter file into '" +
                          directory.string() + "': " + error.message());
@@ -486,11 +490,15 @@ namespace unilateral
       const bool    marked =
         in.read(start.data(), static_cast<std::streamsize>(start.size())) &&
         start == byte_order_mark;
-      const std::string extension =
-        std::filesystem::path(parameter_file).extension().string();
+      const std::string kind = parameter_file_kind(parameter_file);
+      if (kind != "prm" && kind != "json" && kind != "xml")
+        throw InputError("parameter file '" + parameter_file +
+                         "': its name must end in .prm, .json or .xml, "
+                         "which tells the parser its form: rename it");
+      check_structured_parameter_file(prm, parameter_file);
       try
         {
-          if (!marked || extension == ".json" || extension == ".xml")
+          if (!marked || kind != "prm")
             {
               prm.parse_input(parameter_file);
               return;

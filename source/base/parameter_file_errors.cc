@@ -1,5 +1,10 @@
+#include <unilateral/base/input_error.h>
 #include <unilateral/base/parameter_file_errors.h>
 #include <unilateral/base/text.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
 
 #include <algorithm>
 #include <climits>
@@ -207,7 +212,286 @@ namespace unilateral
     {
       return path.empty() ? "the top level" : "subsection '" + path + "'";
     }
+
+    const std::string see_listing =
+      " ('unilateral --print-parameters' lists every parameter)";
+
+    /// nearest() among the names @p by_path lists for @p path.
+    std::string
+    nearest_among(
+      const std::string                                     &name,
+      const std::map<std::string, std::vector<std::string>> &by_path,
+      const std::string                                     &path)
+    {
+      const auto names = by_path.find(path);
+      return names == by_path.end() ? "" : nearest(name, names->second);
+    }
+
+    /// ": it is a parameter of 'X'; set it inside that subsection" where
+    /// @p name is declared in other subsections than @p path, else the
+    /// nearest name declared in @p path.
+    std::string
+    hint_for_entry(
+      const std::string                                     &name,
+      const std::string                                     &path,
+      const std::map<std::string, std::vector<std::string>> &entries)
+    {
+      std::vector<std::string> elsewhere;
+      for (const auto &[other_path, names] : entries)
+        if (other_path != path &&
+            std::find(names.begin(), names.end(), name) != names.end())
+          elsewhere.push_back("'" + other_path + "'");
+      if (elsewhere.empty())
+        return nearest_among(name, entries, path);
+      std::string hint = ": it is a parameter of ";
+      for (std::size_t k = 0; k < elsewhere.size(); ++k)
+        hint += (k == 0                    ? "" :
+                 k + 1 == elsewhere.size() ? " and " :
+                                             ", ") +
+                elsewhere[k];
+      return hint + (elsewhere.size() == 1 ? "; set it inside that subsection" :
+                                             "; set it inside the one meant");
+    }
+
+    using Tree = boost::property_tree::ptree;
+
+    /// deal.II's mangled names ('Blocks_20per_20side', as XML needs them)
+    /// read back; a '_' not followed by two hexadecimal digits stays.
+    std::string
+    demangled(const std::string &name)
+    {
+      std::string result;
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (name[i] == '_' && i + 2 < name.size() &&
+            std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
+          {
+            result +=
+              static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+          }
+        else
+          result += name[i];
+      return result;
+    }
+
+    /// deal.II 9.4's reading of a JSON or XML parameter file node: one
+    /// with a 'value' child, or with no children, sets an entry; any other
+    /// node is a subsection.
+    bool
+    sets_entry(const Tree &node)
+    {
+      return node.empty() || node.get_child_optional("value");
+    }
+
+    std::string
+    value_of(const Tree &node)
+    {
+      return node.empty() ? node.data() : node.get<std::string>("value");
+    }
+
+    /// The declared parameters, by path: entries with their patterns'
+    /// descriptions, and subsections (from the parameters' JSON listing,
+    /// whose names are not mangled).
+    struct Declared
+    {
+      std::map<std::string, std::vector<std::string>> entries, subsections;
+      std::map<std::string, std::string>              pattern_of;
+    };
+
+    void
+    collect(const Tree &node, const std::string &path, Declared &declared)
+    {
+      for (const auto &[name, child] : node)
+        {
+          const std::string full = path.empty() ? name : path + "/" + name;
+          if (child.get_child_optional("value"))
+            {
+              declared.entries[path].push_back(name);
+              declared.pattern_of[full] =
+                child.get<std::string>("pattern_description", "");
+            }
+          else
+            {
+              declared.subsections[path].push_back(name);
+              collect(child, full, declared);
+            }
+        }
+    }
+
+    /// The first thing in @p node (at @p path of @p file) that deal.II's
+    /// reader refuses, said for the user; empty if none.
+    std::string
+    first_refusal(const Tree        &node,
+                  const std::string &path,
+                  const Declared    &declared,
+                  const std::string &file)
+    {
+      const auto declares = [](const auto        &by_path,
+                               const std::string &in,
+                               const std::string &name) {
+        const auto names = by_path.find(in);
+        return names != by_path.end() &&
+               std::find(names->second.begin(), names->second.end(), name) !=
+                 names->second.end();
+      };
+      const std::string in_file = "parameter file '" + file + "': ";
+      for (const auto &[key, child] : node)
+        {
+          const std::string name = demangled(key);
+          const std::string full = path.empty() ? name : path + "/" + name;
+          // Read as parameters by deal.II's reader, which then refuses them.
+          if (name.empty())
+            return in_file + where(path) +
+                   " holds a list ([...]): give each parameter as \"name\": "
+                   "\"value\", and a list of values as one string (\"1, 2\")";
+          if (name == "<xmlcomment>")
+            return in_file + "an XML comment in " + where(path) +
+                   ": deal.II's reader takes it for a parameter: remove it";
+          if (name == "<xmlattr>")
+            return in_file + "XML attributes of " + where(path) +
+                   ": deal.II's reader takes them for parameters: remove them";
+          if (!sets_entry(child))
+            {
+              if (declares(declared.subsections, path, name))
+                {
+                  const std::string refusal =
+                    first_refusal(child, full, declared, file);
+                  if (!refusal.empty())
+                    return refusal;
+                }
+              else if (declares(declared.entries, path, name))
+                return in_file + "parameter '" + full +
+                       "' is given a list or an object: give its value as "
+                       "one string";
+              else
+                return in_file + where(path) + " has no subsection '" +
+                       shortened(name) + "'" +
+                       nearest_among(name, declared.subsections, path) +
+                       see_listing;
+              continue;
+            }
+          if (declares(declared.subsections, path, name))
+            return in_file + "'" + full +
+                   "' is a subsection, not a parameter: give it an object of "
+                   "its parameters";
+          if (!declares(declared.entries, path, name))
+            return in_file + "'" + shortened(name) +
+                   "' is not a parameter of " + where(path) +
+                   hint_for_entry(name, path, declared.entries) + see_listing;
+          const std::string value       = value_of(child);
+          const std::string description = declared.pattern_of.at(full);
+          const auto pattern = dealii::Patterns::pattern_factory(description);
+          if (pattern && !pattern->match(value))
+            return "parameter '" + full + "' = " +
+                   (value.empty() ?
+                      "'' (empty)" :
+                    trimmed(value) != value ?
+                      "'" + shortened(value) + "' (with the spaces around it)" :
+                      shortened(value)) +
+                   ": must be " + in_words(description) + " (in '" + file +
+                   "')";
+        }
+      return "";
+    }
+
+    /// @p file read as deal.II reads a JSON or XML parameter file: the
+    /// tree below the XML's <ParameterHandler> element. Throws InputError
+    /// where it does not parse.
+    Tree
+    structured_tree(const std::string &file, const std::string &kind)
+    {
+      Tree tree;
+      try
+        {
+          if (kind == "json")
+            boost::property_tree::read_json(file, tree);
+          else
+            boost::property_tree::read_xml(file, tree);
+        }
+      catch (const boost::property_tree::file_parser_error &error)
+        {
+          if (error.line() == 0)
+            throw InputError("cannot read parameter file '" + file +
+                             "': " + error.message());
+          throw InputError("parameter file '" + file + "' is not valid " +
+                           (kind == "json" ? "JSON" : "XML") + ": line " +
+                           std::to_string(error.line()) + ": " +
+                           error.message());
+        }
+      if (kind == "json")
+        return tree;
+      const auto handler = tree.get_child_optional("ParameterHandler");
+      if (!handler)
+        throw InputError(
+          "parameter file '" + file +
+          "': its parameters must lie inside one <ParameterHandler> element "
+          "(<ParameterHandler><Scene><value>masonry</value></Scene>"
+          "</ParameterHandler>; names with spaces written as deal.II mangles "
+          "them, 'Blocks_20per_20side')");
+      return *handler;
+    }
+
+    /// value_in_file for a JSON or XML file's tree: the last value set
+    /// (as deal.II's reader sets them in order).
+    std::string
+    value_in_tree(const Tree        &tree,
+                  const std::string &path,
+                  const std::string &name,
+                  const std::string &otherwise)
+    {
+      const Tree *node = &tree;
+      std::string rest = path;
+      while (!rest.empty() && node)
+        {
+          const std::string step = rest.substr(0, rest.find('/'));
+          rest.erase(0, std::min(rest.size(), step.size() + 1));
+          const Tree *next = nullptr;
+          for (const auto &[key, child] : *node)
+            if (demangled(key) == step && !sets_entry(child))
+              next = &child;
+          node = next;
+        }
+      std::string value = otherwise;
+      if (node)
+        for (const auto &[key, child] : *node)
+          if (demangled(key) == name && sets_entry(child))
+            value = value_of(child);
+      return value;
+    }
   } // namespace
+
+  std::string
+  parameter_file_kind(const std::string &parameter_file)
+  {
+    std::string ending =
+      parameter_file.substr(parameter_file.find_last_of('.') + 1);
+    for (char &c : ending)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ending;
+  }
+
+  void
+  check_structured_parameter_file(const dealii::ParameterHandler &prm,
+                                  const std::string &parameter_file)
+  {
+    const std::string kind = parameter_file_kind(parameter_file);
+    if (kind != "json" && kind != "xml")
+      return;
+    const Tree tree = structured_tree(parameter_file, kind);
+    Declared   declared;
+    {
+      std::stringstream listing;
+      prm.print_parameters(listing, dealii::ParameterHandler::JSON);
+      Tree listed;
+      boost::property_tree::read_json(listing, listed);
+      collect(listed, "", declared);
+    }
+    const std::string refusal =
+      first_refusal(tree, "", declared, parameter_file);
+    if (!refusal.empty())
+      throw InputError(refusal);
+  }
 
   std::string
   explain_parse_error(const dealii::ExceptionBase    &error,
@@ -286,15 +570,6 @@ namespace unilateral
       std::vector<std::string> top;
       walk(listing, "", top, declared);
     }
-    const std::string see =
-      " ('unilateral --print-parameters' lists every parameter)";
-    const auto among =
-      [](const std::string                                     &name,
-         const std::map<std::string, std::vector<std::string>> &by_path,
-         const std::string                                     &path) {
-        const auto names = by_path.find(path);
-        return names == by_path.end() ? "" : nearest(name, names->second);
-      };
 
     if (invalid_value)
       {
@@ -325,7 +600,8 @@ namespace unilateral
             lines != in_file.lines.end() && lines->second.count(line))
           leaf = trimmed(lines->second.at(line).substr(11));
         return at_line + ": " + where(path) + " has no subsection '" + leaf +
-               "'" + among(leaf, declared.subsections, path) + see;
+               "'" + nearest_among(leaf, declared.subsections, path) +
+               see_listing;
       }
     const std::string undeclared   = "No entry with name <",
                       declared_end = "> was declared";
@@ -337,25 +613,9 @@ namespace unilateral
         const std::string name =
           text.substr(name_start + undeclared.size(),
                       name_end - name_start - undeclared.size());
-        std::vector<std::string> elsewhere;
-        for (const auto &[other_path, names] : declared.entries)
-          if (other_path != path &&
-              std::find(names.begin(), names.end(), name) != names.end())
-            elsewhere.push_back("'" + other_path + "'");
-        std::string hint = among(name, declared.entries, path);
-        if (!elsewhere.empty())
-          {
-            hint = ": it is a parameter of ";
-            for (std::size_t k = 0; k < elsewhere.size(); ++k)
-              hint += (k == 0                    ? "" :
-                       k + 1 == elsewhere.size() ? " and " :
-                                                   ", ") +
-                      elsewhere[k];
-            hint += elsewhere.size() == 1 ? "; set it inside that subsection" :
-                                            "; set it inside the one meant";
-          }
         return at_line + ": '" + shortened(name) + "' is not a parameter of " +
-               where(path) + hint + see;
+               where(path) + hint_for_entry(name, path, declared.entries) +
+               see_listing;
       }
     const std::size_t reason = text.find(">: ", file_start);
     return at_line + ": " + trimmed(text.substr(reason + 3));
@@ -367,6 +627,17 @@ namespace unilateral
                 const std::string &name,
                 const std::string &otherwise)
   {
+    const std::string kind = parameter_file_kind(parameter_file);
+    if (kind == "json" || kind == "xml")
+      try
+        {
+          const Tree tree = structured_tree(parameter_file, kind);
+          return value_in_tree(tree, path, name, otherwise);
+        }
+      catch (const InputError &)
+        {
+          return otherwise;
+        }
     Walk                     in_file;
     std::ifstream            stream(parameter_file);
     std::vector<std::string> top;

@@ -3,8 +3,9 @@
 //     value and the fix (printed here: code and message), and so does a
 //     wall too large for 'Memory limit'; so do what deal.II's parser
 //     refuses (the parameter's whole path, which deal.II does not name,
-//     the nearest declared name for a misspelt one), and input refused
-//     where an earlier run's folder is replaces its summary;
+//     the nearest declared name for a misspelt one), in .prm, JSON and
+//     XML files, and input refused where an earlier run's folder is
+//     replaces its summary;
 //  2. prescribed displacements far larger than the elastic ones end
 //     'inaccurate' (exit 2) where double precision loses the energy, and
 //     converge with the shift-independent answer where it does not;
@@ -40,9 +41,10 @@ namespace
   run(const std::string &name,
       const std::string &text,
       std::string       &error,
-      std::string       *output = nullptr)
+      std::string       *output    = nullptr,
+      const std::string &extension = ".prm")
   {
-    const std::string file = name + ".prm";
+    const std::string file = name + extension;
     std::ofstream(file) << text;
     std::vector<std::string> arguments = {"unilateral", file};
     char              *argv[] = {arguments[0].data(), arguments[1].data()};
@@ -70,10 +72,12 @@ namespace
   }
 
   void
-  bad_input(const std::string &what, const std::string &text)
+  bad_input(const std::string &what,
+            const std::string &text,
+            const std::string &extension = ".prm")
   {
     std::string error;
-    const int   code = run("bad_input", text, error);
+    const int   code = run("bad_input", text, error, nullptr, extension);
     std::cout << what << ": exit code " << code << ", " << error;
     if (error.empty() || error.find('\n') != error.size() - 1)
       std::cout << "  (expected exactly one line)\n";
@@ -220,6 +224,88 @@ main()
               << holds(after.str(), "\"status\": \"error\"")
               << ", with the message: "
               << holds(after.str(), "did you mean 'Blocks per side'") << "\n";
+  }
+  // JSON and XML parameter files, in the same form (before: deal.II's
+  // messages, "The string <2.5> does not match the given pattern
+  // <[Integer range ...]>", "You can't ask for entry <Metod> you have not
+  // yet declared", boost's "<unspecified file>(1): expected key string").
+  const std::string json_masonry =
+    "{ \"Scene\": \"masonry\", \"Output\": { \"Directory\": \"results\", "
+    "\"Print timings\": \"false\", \"Progress\": \"false\", "
+    "\"Write VTU\": \"false\" }, \"Masonry\": { \"Blocks per side\": ";
+  bad_input("JSON: m not an integer", json_masonry + "\"2.5\" } }", ".json");
+  bad_input("JSON: a misspelt name",
+            json_masonry + "2 }, \"Solver\": { \"Metod\": \"pdas\" } }",
+            ".json");
+  bad_input("JSON: a name of another subsection",
+            json_masonry + "2 }, \"Solver\": { \"Tau\": \"1\" } }",
+            ".json");
+  bad_input("JSON: a misspelt subsection",
+            json_masonry +
+              "2, \"Boundary condition\": { \"Relative gap\": \"0.1\" } } }",
+            ".json");
+  bad_input("JSON: a list for a value",
+            json_masonry + "2, \"Refinement\": [1, 2] } }",
+            ".json");
+  bad_input("JSON: a subsection given a value",
+            json_masonry + "2 }, \"Solver\": \"pdas\" }",
+            ".json");
+  bad_input("JSON: a missing '}'", json_masonry + "2 }", ".json");
+  const std::string xml_start =
+    "<?xml version=\"1.0\"?>\n<ParameterHandler><Scene><value>masonry</value>"
+    "</Scene><Output><Directory><value>results</value></Directory>"
+    "<Progress>false</Progress></Output>";
+  bad_input("XML: m not an integer (a mangled name)",
+            xml_start + "<Masonry><Blocks_20per_20side><value>2.5</value>"
+                        "</Blocks_20per_20side></Masonry></ParameterHandler>\n",
+            ".xml");
+  bad_input("XML: a comment",
+            xml_start + "<!-- m = 2 --></ParameterHandler>\n",
+            ".xml");
+  bad_input("XML: no <ParameterHandler>",
+            "<?xml version=\"1.0\"?>\n<Parameters><Scene>masonry</Scene>"
+            "</Parameters>\n",
+            ".xml");
+  bad_input("XML: not closed", xml_start, ".xml");
+  bad_input("a file ending in .txt", masonry_prm(""), ".txt");
+  {
+    // Valid JSON and XML files run (names as the listing gives them, and
+    // mangled); a misspelt name then marks the earlier run's summary as
+    // not this run's, as for a .prm file (the folder read from the JSON).
+    std::string error;
+    const int   json =
+      run("rerun_json", json_masonry + "2 } }", error, nullptr, ".json");
+    std::cout << "a valid JSON file: exit code " << json
+              << ", copied as parameters.json: "
+              << (std::ifstream("results/rerun_json/parameters.json") ? "yes" :
+                                                                        "no")
+              << ", as parameters.prm: "
+              << (std::ifstream("results/rerun_json/parameters.prm") ? "yes" :
+                                                                       "no")
+              << "\n"
+              << error;
+    const int xml =
+      run("valid_xml",
+          xml_start + "<Masonry><Blocks_20per_20side><value>2</value>"
+                      "</Blocks_20per_20side></Masonry>"
+                      "</ParameterHandler>\n",
+          error,
+          nullptr,
+          ".xml");
+    std::cout << "a valid XML file: exit code " << xml << "\n" << error;
+    const int         misspelt = run("rerun_json",
+                             json_masonry + "2, \"Refinment\": \"1\" } }",
+                             error,
+                             nullptr,
+                             ".json");
+    std::ifstream     file("results/rerun_json/summary.json");
+    std::stringstream summary;
+    summary << file.rdbuf();
+    std::cout << "a misspelt name in JSON in an earlier run's folder: exit "
+              << "code " << misspelt << ", its summary.json now says 'error': "
+              << holds(summary.str(), "\"status\": \"error\"")
+              << ", with the message: "
+              << holds(summary.str(), "did you mean 'Refinement'") << "\n";
   }
   // A wall too large for the memory it may use: refused before its
   // matrix is built (1 MB is less than the test already holds).

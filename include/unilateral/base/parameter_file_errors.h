@@ -29,11 +29,38 @@ namespace unilateral
                       const std::string              &parameter_file);
 
   /**
+   * The kind of @p parameter_file as deal.II's ParameterHandler::parse_input
+   * chooses it: its ending after the last '.', in lower case ("prm",
+   * "json", "xml"; deal.II refuses any other).
+   */
+  std::string
+  parameter_file_kind(const std::string &parameter_file);
+
+  /**
+   * For a JSON or XML @p parameter_file (by its kind; nothing for others):
+   * throws InputError for the first thing deal.II's reader would refuse in
+   * it, said as explain_parse_error says it for a .prm file but without a
+   * line (boost's property tree keeps none): a name not declared where it
+   * stands (with the nearest declared one, or the subsections that declare
+   * it), a value its pattern refuses, a file that does not parse (with
+   * boost's line and reason), a list or an object where a value belongs,
+   * XML comments. deal.II 9.4 names only the entry or the value there, or
+   * gives boost's message without the file. Reads the file as deal.II 9.4
+   * does: a node with a 'value' child or with no children sets an entry,
+   * names may be mangled (XML's 'Blocks_20per_20side'), any other node is a
+   * subsection.
+   */
+  void
+  check_structured_parameter_file(const dealii::ParameterHandler &prm,
+                                  const std::string &parameter_file);
+
+  /**
    * The value that @p parameter_file (and the files it includes) sets for
    * parameter @p name of subsection @p path ("" for the top level), read
    * by the parser's rules, or @p otherwise where it sets none: what must be
    * known of a file that the parser refused (the run's folder, to mark an
-   * earlier run's summary there as not this run's).
+   * earlier run's summary there as not this run's). JSON and XML files are
+   * read as check_structured_parameter_file reads them.
    */
   std::string
   value_in_file(const std::string &parameter_file,
