@@ -30,6 +30,12 @@
 //    'converged', its residual within the KKT tolerance, with the note that
 //    the answer holds only to it (the slide's regularisation force is at
 //    the rounding of its rows' forces);
+//  - a block in a frictionless corner (Signorini base and side) turned so
+//    that it slides away from the side: no equilibrium before solving, at
+//    every KKT tolerance and far from the origin, where before PDAS moved
+//    it by 1e9 and ended 'inaccurate' (at a KKT tolerance of 0.2:
+//    'converged'), the status depending on the turn and the position (a
+//    review); turned the other way, the reactions of rigid-body statics;
 //  - a block in a V-groove of 5e-6 pushed by 1e-6 of its weight is in
 //    equilibrium at the origin and far from it (a review found it called
 //    'no equilibrium' at 1e5: the test of a free motion once allowed more
@@ -45,6 +51,8 @@
 #include <cmath>
 #include <regex>
 #include <sstream>
+#include <tuple>
+#include <vector>
 
 using namespace application_test;
 
@@ -261,6 +269,128 @@ namespace
     return "beam_" + method + ".prm";
   }
 
+  /**
+   * A unit block of 2 x 2 cells (weight 1) in a frictionless corner: its
+   * base and its left side on Signorini supports, the block turned by phi
+   * degrees and moved by (shift, shift), gravity vertical. For 0 < phi <
+   * 90 the base pushes with cos(phi) and the side with sin(phi); for phi <
+   * 0 the block slides down its base, away from the side: no equilibrium,
+   * which only the supports' sign shows (both together hold every rigid
+   * motion). Before, PDAS moved it by 1e9 along the slide and ended
+   * 'inaccurate', advising other units or a larger KKT tolerance, and
+   * with that tolerance (0.2) 'converged' (a review).
+   */
+  std::string
+  block_in_corner(const double       phi,
+                  const double       shift,
+                  const std::string &tolerance)
+  {
+    const double pi = 3.14159265358979323846;
+    const double c = std::cos(phi * pi / 180), s = std::sin(phi * pi / 180);
+    std::ostringstream nodes;
+    nodes.precision(17);
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i)
+        nodes << 3 * j + i + 1 << " " << shift + c * 0.5 * i - s * 0.5 * j
+              << " " << shift + s * 0.5 * i + c * 0.5 * j << " 0\n";
+    write("corner.msh",
+          "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n"
+          "1 101 \"base\"\n1 102 \"side\"\n$EndPhysicalNames\n$Nodes\n9\n" +
+            nodes.str() +
+            "$EndNodes\n$Elements\n8\n1 1 2 101 101 1 2\n"
+            "2 1 2 101 101 2 3\n3 1 2 102 102 4 1\n4 1 2 102 102 7 4\n"
+            "5 3 2 1 1 1 2 5 4\n6 3 2 1 1 2 3 6 5\n7 3 2 1 1 4 5 8 7\n"
+            "8 3 2 1 1 5 6 9 8\n$EndElements\n");
+    write("corner.prm",
+          "set Scene = masonry\nsubsection Output\n  set Directory = results\n"
+          "  set Print timings = false\n  set Progress = false\n"
+          "  set Write VTU = false\nend\nsubsection Masonry\n"
+          "  set Geometry = mesh file\n  set Mesh file = corner.msh\n"
+          "  subsection Boundary conditions\n"
+          "    set Normal displacement zero =\n    set Signorini = base, side\n"
+          "    set Signorini gap = 0\n    set Traction boundaries =\n"
+          "    set Gravity = 1\n  end\nend\n"
+          "subsection Solver\n  set KKT tolerance = " +
+            tolerance + "\nend\n");
+    return "corner.prm";
+  }
+
+  /**
+   * block_in_corner in 3D: the unit cube of 2 x 2 x 2 cells, its base and
+   * its side on Signorini supports, free along z (no support there, and
+   * gravity does no work along it).
+   */
+  std::string
+  cube_in_corner(const double phi)
+  {
+    const double pi = 3.14159265358979323846;
+    const double c = std::cos(phi * pi / 180), s = std::sin(phi * pi / 180);
+    const auto node = [](int i, int j, int k) { return 9 * k + 3 * j + i + 1; };
+    std::ostringstream nodes, elements;
+    nodes.precision(17);
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+          nodes << node(i, j, k) << " " << c * 0.5 * i - s * 0.5 * j << " "
+                << s * 0.5 * i + c * 0.5 * j << " " << 0.5 * k << "\n";
+    int element = 0;
+    for (int a = 0; a < 2; ++a)
+      for (int k = 0; k < 2; ++k)
+        {
+          elements << ++element << " 3 2 101 101 " << node(a, 0, k) << " "
+                   << node(a + 1, 0, k) << " " << node(a + 1, 0, k + 1) << " "
+                   << node(a, 0, k + 1) << "\n";
+          elements << ++element << " 3 2 102 102 " << node(0, a, k) << " "
+                   << node(0, a + 1, k) << " " << node(0, a + 1, k + 1) << " "
+                   << node(0, a, k + 1) << "\n";
+        }
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+          {
+            elements << ++element << " 5 2 1 1";
+            for (const int z : {k, k + 1})
+              elements << " " << node(i, j, z) << " " << node(i + 1, j, z)
+                       << " " << node(i + 1, j + 1, z) << " "
+                       << node(i, j + 1, z);
+            elements << "\n";
+          }
+    write("cube.msh",
+          "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n"
+          "2 101 \"base\"\n2 102 \"side\"\n$EndPhysicalNames\n$Nodes\n27\n" +
+            nodes.str() + "$EndNodes\n$Elements\n" + std::to_string(element) +
+            "\n" + elements.str() + "$EndElements\n");
+    write("cube.prm",
+          "set Scene = masonry\nsubsection Output\n  set Directory = results\n"
+          "  set Print timings = false\n  set Progress = false\n"
+          "  set Write VTU = false\nend\nsubsection Masonry\n"
+          "  set Dimension = 3\n"
+          "  set Geometry = mesh file\n  set Mesh file = cube.msh\n"
+          "  subsection Boundary conditions\n"
+          "    set Normal displacement zero =\n    set Signorini = base, side\n"
+          "    set Signorini gap = 0\n    set Traction boundaries =\n"
+          "    set Gravity = 1\n  end\nend\n");
+    return "cube.prm";
+  }
+
+  /// The size of the reaction force on @p boundary in summary.json (2D or
+  /// 3D).
+  double
+  reaction_size(const std::string &json, const std::string &boundary)
+  {
+    std::smatch found;
+    if (std::regex_search(json,
+                          found,
+                          std::regex("\"" + boundary +
+                                     "\": *\\{\\s*\"force\": *\\[\\s*"
+                                     "([-+0-9.eE]+),\\s*([-+0-9.eE]+)"
+                                     "(?:,\\s*([-+0-9.eE]+))?")))
+      return std::hypot(std::stod(found[1]),
+                        std::stod(found[2]),
+                        found[3].matched ? std::stod(found[3]) : 0.0);
+    return std::nan("");
+  }
+
   /// The vertical force of the reaction on @p boundary in summary.json.
   double
   reaction(const std::string &json, const std::string &boundary)
@@ -395,6 +525,59 @@ main()
                 << yes_no(groove.out.find("can move freely") !=
                           std::string::npos)
                 << "\n";
+    }
+
+  for (const auto &[phi, shift, tolerance] :
+       std::vector<std::tuple<double, double, std::string>>{{10, 0, "1e-8"},
+                                                            {1e-3, 0, "1e-8"},
+                                                            {10, 1e6, "1e-8"},
+                                                            {-1, 0, "1e-8"},
+                                                            {-1, 0, "0.2"},
+                                                            {-1, 1e6, "1e-8"},
+                                                            {-1e-3, 0, "1e-8"},
+                                                            {91, 0, "1e-8"}})
+    {
+      const double      pi      = 3.14159265358979323846;
+      const Result      corner  = run({block_in_corner(phi, shift, tolerance)});
+      const std::string summary = read("results/corner/summary.json");
+      std::cout << "a block in a corner turned by " << phi << " degrees, at "
+                << shift << ", KKT tolerance " << tolerance << ": exit code "
+                << corner.code;
+      if (corner.code == 0)
+        std::cout << ", reactions cos(phi) and sin(phi): "
+                  << yes_no(std::abs(reaction_size(summary, "base") -
+                                     std::cos(phi * pi / 180)) < 1e-8 &&
+                            std::abs(reaction_size(summary, "side") -
+                                     std::sin(phi * pi / 180)) < 1e-8);
+      else
+        std::cout << ", no equilibrium before solving: "
+                  << yes_no(corner.err.find("could resist only by pulling") !=
+                            std::string::npos);
+      std::cout << "\n";
+    }
+
+  // The same in 3D, free along z: the escape is found among the motions
+  // the supports leave besides that free one. At 1e-3 degrees, the least
+  // squares' few pushing nodes once let the loads' rounding turn the
+  // escape about the line they leave free.
+  for (const double phi : {10.0, -1.0, -1e-3})
+    {
+      const double      pi      = 3.14159265358979323846;
+      const Result      cube    = run({cube_in_corner(phi)});
+      const std::string summary = read("results/cube/summary.json");
+      std::cout << "a cube in a corner turned by " << phi
+                << " degrees, free along z: exit code " << cube.code;
+      if (cube.code == 0)
+        std::cout << ", reactions cos(phi) and sin(phi): "
+                  << yes_no(std::abs(reaction_size(summary, "base") -
+                                     std::cos(phi * pi / 180)) < 1e-8 &&
+                            std::abs(reaction_size(summary, "side") -
+                                     std::sin(phi * pi / 180)) < 1e-8);
+      else
+        std::cout << ", no equilibrium before solving: "
+                  << yes_no(cube.err.find("could resist only by pulling") !=
+                            std::string::npos);
+      std::cout << "\n";
     }
 
   // Courses that slide on each other (free_slides): a wall on a fixed base

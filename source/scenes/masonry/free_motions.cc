@@ -162,10 +162,18 @@ namespace unilateral::masonry
        * length (a review: 16,000 faces of 0.1 at 1e5).
        */
       double rounding = 0;
-      /// Its supports' rows in the basis of rigid motions (support_row).
+      /// Its supports' rows in the basis of rigid motions (support_row):
+      /// the first n_bilateral of held nodes and rollers, then the
+      /// Signorini supports'. Kept only where held_by_signorini.
       std::vector<RigidVector<dim>> rows;
+      std::size_t                   n_bilateral = 0;
       /// A basis of its free motions (empty if the supports hold it).
       std::vector<RigidVector<dim>> motions;
+      /// A basis of the motions its other supports than the Signorini ones
+      /// leave free, where these are more than its free motions: then its
+      /// Signorini supports, which only push, hold it in some motion.
+      std::vector<RigidVector<dim>> bilateral_motions;
+      bool                          held_by_signorini = false;
       /// "block 3 (a node at (1, 0)) and the 2 blocks joined to it".
       std::string who;
     };
@@ -202,8 +210,11 @@ namespace unilateral::masonry
     }
 
     /**
-     * The groups of blocks linked by joints, each with the free motions
-     * that its supports leave it, and for every node its group's index.
+     * The groups of blocks linked by joints that their supports leave free
+     * to move, each with those free motions, and those that their
+     * Signorini supports hold in some motion (Group::held_by_signorini);
+     * for every node its group's index (none for a node of a group that
+     * its other supports hold).
      */
     template <int dim>
     std::vector<Group<dim>>
@@ -268,6 +279,8 @@ namespace unilateral::masonry
           }
       for (const Roller<dim> &r : contacts.rollers)
         add_support(r.node, r.normal);
+      for (Group<dim> &g : group)
+        g.n_bilateral = g.rows.size();
       for (const UnilateralConstraint<dim> &s : contacts.constraints)
         if (s.kind == ConstraintKind::signorini)
           add_support(s.lower, s.normal);
@@ -287,8 +300,22 @@ namespace unilateral::masonry
                        std::max(1.0, g.farthest / std::max(g.size, 1e-300)) *
                        faces_along;
           g.motions = free_basis<dim>(g.rows, g.rounding);
-          g.rows    = {};
-          if (g.motions.empty())
+          if (g.rows.size() > g.n_bilateral &&
+              g.motions.size() < n_rigid_motions(dim))
+            {
+              const std::vector<RigidVector<dim>> bilateral(g.rows.begin(),
+                                                            g.rows.begin() +
+                                                              g.n_bilateral);
+              g.bilateral_motions = free_basis<dim>(bilateral, g.rounding);
+              g.held_by_signorini =
+                g.bilateral_motions.size() > g.motions.size();
+            }
+          if (!g.held_by_signorini)
+            {
+              g.rows              = {};
+              g.bilateral_motions = {};
+            }
+          if (g.motions.empty() && !g.held_by_signorini)
             continue;
           const unsigned int first_block = contacts.node_block[g.first_node];
           const std::string  where =
@@ -320,6 +347,160 @@ namespace unilateral::masonry
     };
 
     /**
+     * Lawson & Hanson's non-negative least squares (Solving Least Squares
+     * Problems, 1974, ch. 23): mu >= 0 minimising |C mu - t|, for C of a
+     * few rows (a group's rigid motions) and a column per Signorini
+     * support. At its end the residual r = t - C mu has C^T r <= 0 (to the
+     * rounding of C^T t) and r^T C mu = 0. Stops after a bounded number of
+     * steps where rounding keeps it from ending (its residual is then
+     * what the caller's proof test judges).
+     */
+    Eigen::VectorXd
+    non_negative_least_squares(const Eigen::MatrixXd &C,
+                               const Eigen::VectorXd &t)
+    {
+      const Eigen::Index m  = C.cols();
+      Eigen::VectorXd    mu = Eigen::VectorXd::Zero(m);
+      std::vector<char>  passive(m, 0);
+      const double       zero_gradient =
+        1e2 * epsilon * (C.cwiseAbs().transpose() * t.cwiseAbs()).maxCoeff();
+      for (Eigen::Index step = 0; step < 4 * C.rows() + 20; ++step)
+        {
+          // The support whose force would lower the residual most enters.
+          const Eigen::VectorXd gradient = C.transpose() * (t - C * mu);
+          Eigen::Index          entering = -1;
+          double                largest  = zero_gradient;
+          for (Eigen::Index j = 0; j < m; ++j)
+            if (!passive[j] && gradient[j] > largest)
+              largest = gradient[entering = j];
+          if (entering < 0)
+            break;
+          passive[entering] = 1;
+          // Least squares on the passive columns; where that makes a force
+          // negative, go only as far as the first reaches zero and drop it.
+          for (Eigen::Index inner = 0; inner <= m; ++inner)
+            {
+              std::vector<Eigen::Index> P;
+              for (Eigen::Index j = 0; j < m; ++j)
+                if (passive[j])
+                  P.push_back(j);
+              Eigen::MatrixXd CP(C.rows(), P.size());
+              for (std::size_t k = 0; k < P.size(); ++k)
+                CP.col(k) = C.col(P[k]);
+              const Eigen::VectorXd z =
+                CP.completeOrthogonalDecomposition().solve(t);
+              double       alpha   = 1;
+              Eigen::Index blocked = -1;
+              for (std::size_t k = 0; k < P.size(); ++k)
+                if (z[k] <= 0 && mu[P[k]] / (mu[P[k]] - z[k]) < alpha)
+                  {
+                    alpha   = mu[P[k]] / (mu[P[k]] - z[k]);
+                    blocked = P[k];
+                  }
+              for (std::size_t k = 0; k < P.size(); ++k)
+                mu[P[k]] += alpha * (z[k] - mu[P[k]]);
+              if (blocked < 0)
+                break;
+              mu[blocked] = 0;
+              for (const Eigen::Index j : P)
+                if (!(mu[j] > 0))
+                  {
+                    mu[j]      = 0;
+                    passive[j] = 0;
+                  }
+            }
+        }
+      return mu;
+    }
+
+    /**
+     * For a group that its Signorini supports hold in some motion
+     * (Group::held_by_signorini): a rigid motion that keeps its other
+     * supports, closes none of its Signorini supports (to rounding), and
+     * along which the loads do work; zero where its supports balance its
+     * loads by pushing. Such a motion exists exactly where no forces mu >=
+     * 0 of the Signorini supports (and any of the others) balance the
+     * group's loads @p loads as a rigid body (Farkas; the forces of the
+     * joints within the group cancel): the statics, N^T (F + R^T mu) = 0
+     * in the basis N of the motions its other supports leave free (F: the
+     * loads; R: the Signorini rows), solved by non-negative least squares.
+     * Their
+     * residual r, where not zero, gives v = -N r: R v >= 0 and F . v =
+     * |r|^2 > 0. That is the loads' direction among the motions that keep
+     * the supports which push (mu > 0) and the other supports, and is
+     * computed so, from their rows: r itself is the difference of forces
+     * far larger than it where the loads nearly balance (a block on a
+     * slope of 1e-3 degrees), and as -N r the motion closed the pushing
+     * supports by far more than their rounding.
+     */
+    template <int dim>
+    RigidVector<dim>
+    escape_motion(const Group<dim> &g, const RigidVector<dim> &loads)
+    {
+      const Eigen::Index k = g.bilateral_motions.size();
+      const Eigen::Index m = g.rows.size() - g.n_bilateral;
+      Eigen::MatrixXd    C(k, m);
+      Eigen::VectorXd    work(k);
+      for (Eigen::Index j = 0; j < k; ++j)
+        {
+          work[j] = g.bilateral_motions[j].dot(loads);
+          for (Eigen::Index s = 0; s < m; ++s)
+            C(j, s) = g.bilateral_motions[j].dot(g.rows[g.n_bilateral + s]);
+        }
+      const Eigen::VectorXd mu = non_negative_least_squares(C, -work);
+      // The loads' direction among the motions that keep the other
+      // supports and the Signorini ones for which @p keep holds.
+      const auto direction = [&](const auto &keep) {
+        std::vector<RigidVector<dim>> kept(g.rows.begin(),
+                                           g.rows.begin() + g.n_bilateral);
+        for (Eigen::Index s = 0; s < m; ++s)
+          if (keep(s))
+            kept.push_back(g.rows[g.n_bilateral + s]);
+        RigidVector<dim> v = RigidVector<dim>::Zero();
+        for (const RigidVector<dim> &z : free_basis<dim>(kept, g.rounding))
+          v += z.dot(loads) * z;
+        return v.norm() > 0 ? RigidVector<dim>(v / v.norm()) : v;
+      };
+      const RigidVector<dim> pushing =
+        direction([&](const Eigen::Index s) { return mu[s] > 0; });
+      // Then every support that motion does not open (to 1e-8), not only
+      // those that push: the least squares push with as few as balance the
+      // loads (a block's base at two nodes), and the loads' rounding turned
+      // the motion about the line those leave free, closing the rest of
+      // the base by 1e-12 of it (a 3D block on a slope of 1e-3 degrees).
+      return direction([&](const Eigen::Index s) {
+        return g.rows[g.n_bilateral + s].dot(pushing) <= 1e-8;
+      });
+    }
+
+    /**
+     * The loads on each group as a row over its rigid motions: their work
+     * along the motion v is F . v (the sum of f . u over its nodes, by
+     * rigid_row() with f for the normal).
+     */
+    template <int dim>
+    std::vector<RigidVector<dim>>
+    group_loads(const ContactSet<dim>           &contacts,
+                const std::vector<Group<dim>>   &groups,
+                const std::vector<unsigned int> &group_of_node,
+                const std::vector<double>       &load)
+    {
+      std::vector<RigidVector<dim>> F(groups.size(), RigidVector<dim>::Zero());
+      for (std::size_t a = 0; a < contacts.node_position.size(); ++a)
+        if (const unsigned int i = group_of_node[a]; i < groups.size())
+          {
+            std::array<double, dim> f;
+            for (unsigned int c = 0; c < dim; ++c)
+              f[c] = load[contacts.node_dofs[a][c]];
+            F[i] += support_row<dim>(f,
+                                     contacts.node_position[a],
+                                     groups[i].centre,
+                                     std::max(groups[i].size, 1e-300));
+          }
+      return F;
+    }
+
+    /**
      * For each group, the combination of its free motions along which the
      * loads do the most work: with the loads' work w_j along each motion of
      * its (orthonormal) basis, v = sum_j w_j v_j / |w| (zero if they do no
@@ -327,40 +508,33 @@ namespace unilateral::masonry
      */
     template <int dim>
     std::vector<RigidVector<dim>>
-    most_driven_motions(const ContactSet<dim>           &contacts,
-                        const std::vector<Group<dim>>   &groups,
-                        const std::vector<unsigned int> &group_of_node,
-                        const std::vector<double>       &load)
+    most_driven_motions(const std::vector<Group<dim>>       &groups,
+                        const std::vector<RigidVector<dim>> &loads)
     {
-      std::vector<Eigen::VectorXd> work(groups.size());
-      for (std::size_t i = 0; i < groups.size(); ++i)
-        work[i] = Eigen::VectorXd::Zero(groups[i].motions.size());
-      for (std::size_t a = 0; a < contacts.node_position.size(); ++a)
-        if (const unsigned int i = group_of_node[a]; i < groups.size())
-          for (std::size_t j = 0; j < groups[i].motions.size(); ++j)
-            {
-              const auto u = motion_at<dim>(groups[i].motions[j],
-                                            contacts.node_position[a],
-                                            groups[i]);
-              for (unsigned int c = 0; c < dim; ++c)
-                work[i][j] += load[contacts.node_dofs[a][c]] * u[c];
-            }
       std::vector<RigidVector<dim>> v(groups.size(), RigidVector<dim>::Zero());
       for (std::size_t i = 0; i < groups.size(); ++i)
-        for (std::size_t j = 0; j < groups[i].motions.size(); ++j)
-          if (work[i].norm() > 0)
-            v[i] += work[i][j] / work[i].norm() * groups[i].motions[j];
+        {
+          Eigen::VectorXd work(groups[i].motions.size());
+          for (std::size_t j = 0; j < groups[i].motions.size(); ++j)
+            work[j] = groups[i].motions[j].dot(loads[i]);
+          if (work.norm() > 0)
+            for (std::size_t j = 0; j < groups[i].motions.size(); ++j)
+              v[i] += work[j] / work.norm() * groups[i].motions[j];
+        }
       return v;
     }
 
-    /// The figures of AlongMotion for each group's motion @p v.
+    /// The figures of AlongMotion for each group's motion @p v; with @p
+    /// signorini_may_open, Signorini supports count only where v closes
+    /// them.
     template <int dim>
     std::vector<AlongMotion>
     along_motions(const ContactSet<dim>               &contacts,
                   const std::vector<Group<dim>>       &groups,
                   const std::vector<unsigned int>     &group_of_node,
                   const std::vector<double>           &load,
-                  const std::vector<RigidVector<dim>> &v)
+                  const std::vector<RigidVector<dim>> &v,
+                  const bool                           signorini_may_open)
     {
       std::vector<AlongMotion> along(groups.size());
       const auto               motion = [&](const unsigned int node) {
@@ -400,11 +574,16 @@ namespace unilateral::masonry
       for (const Roller<dim> &r : contacts.rollers)
         change(r.node, normal_part(r.normal, r.node));
       for (const UnilateralConstraint<dim> &s : contacts.constraints)
-        change(s.lower,
-               normal_part(s.normal, s.lower) -
-                 (s.kind == ConstraintKind::joint ?
-                    normal_part(s.normal, s.upper) :
-                    0.0));
+        if (s.kind == ConstraintKind::joint)
+          change(s.lower,
+                 normal_part(s.normal, s.upper) -
+                   normal_part(s.normal, s.lower));
+        else
+          {
+            const double opening = normal_part(s.normal, s.lower);
+            change(s.lower,
+                   signorini_may_open ? std::min(opening, 0.0) : opening);
+          }
       return along;
     }
 
@@ -566,12 +745,16 @@ namespace unilateral::masonry
 
   template <int dim>
   std::vector<std::string>
-  free_rigid_motions(const ContactSet<dim> &contacts)
+  free_rigid_motions(const ContactSet<dim> &contacts, bool &held_by_signorini)
   {
     std::vector<unsigned int> group_of_node(contacts.node_position.size());
     std::vector<std::string>  result;
+    held_by_signorini = false;
     for (const Group<dim> &g : groups_and_free_motions(contacts, group_of_node))
       {
+        held_by_signorini = held_by_signorini || g.held_by_signorini;
+        if (g.motions.empty())
+          continue;
         std::vector<std::string> motions;
         for (const RigidVector<dim> &v : g.motions)
           motions.push_back(
@@ -659,40 +842,63 @@ namespace unilateral::masonry
     std::vector<unsigned int>     group_of_node;
     const std::vector<Group<dim>> groups =
       groups_and_free_motions(contacts, group_of_node);
-    const std::vector<RigidVector<dim>> v =
-      most_driven_motions(contacts, groups, group_of_node, load);
-    const std::vector<AlongMotion> along =
-      along_motions(contacts, groups, group_of_node, load, v);
+    const std::vector<RigidVector<dim>> loads =
+      group_loads(contacts, groups, group_of_node, load);
+
+    // A proof only where the motion v is free to a hundred times the
+    // rounding of the support rows (Group::rounding: larger for a
+    // structure far from the origin), and the loads' work is a thousand
+    // times the gap change measured or that rounding, and at least 1e-10:
+    // a support tilted by theta against v holds loads whose work along v
+    // is up to theta of their size (a block in a V-groove). work / scale
+    // is the sine of the slope that a block slides down. Along an escape
+    // (escape_motion), only the gaps it closes count, and the loads must
+    // push along it, not against.
+    const auto proof = [&](const std::vector<RigidVector<dim>> &v,
+                           const bool                           escape) {
+      const std::vector<AlongMotion> along =
+        along_motions(contacts, groups, group_of_node, load, v, escape);
+      for (std::size_t i = 0; i < groups.size(); ++i)
+        {
+          const AlongMotion &a        = along[i];
+          const double       rounding = groups[i].rounding;
+          const double       tilt     = a.changed / a.largest;
+          const double       work     = escape ? a.work : std::abs(a.work);
+          if (!(tilt <= 1e2 * rounding) ||
+              !(work >
+                std::max(1e-10, 1e3 * std::max(tilt, rounding)) * a.scale))
+            continue;
+          std::ostringstream text;
+          text.precision(2);
+          text << "the loads do work along a motion that "
+               << (escape ? "the supports could resist only by pulling (it "
+                            "opens Signorini supports and moves no other "
+                            "support or joint), the " :
+                            "no support or joint resists, the ")
+               << describe_motion<dim>(v[i], groups[i].centre, groups[i].size)
+               << " of " << groups[i].who << ": their work along it is "
+               << work / a.scale << " of sum |f| |u|, and it "
+               << (escape ? "closes" : "changes") << " no gap by more than "
+               << tilt
+               << " of the largest displacement (found from the supports "
+                  "and the loads before solving)";
+          return text.str();
+        }
+      return std::string();
+    };
+    if (const std::string free =
+          proof(most_driven_motions(groups, loads), false);
+        !free.empty())
+      return free;
+    if (const std::string slide = loads_driving_a_slide(contacts, slides, load);
+        !slide.empty())
+      return slide;
+    std::vector<RigidVector<dim>> escapes(groups.size(),
+                                          RigidVector<dim>::Zero());
     for (std::size_t i = 0; i < groups.size(); ++i)
-      {
-        // A proof only where v is free to a hundred times the rounding of
-        // the support rows (Group::rounding: larger for a structure far
-        // from the origin), and the loads' work is a thousand times the gap
-        // change measured or that rounding, and at least 1e-10: a support
-        // tilted by theta against v holds loads whose work along v is up to
-        // theta of their size (a block in a V-groove). work / scale is the sine
-        // of the slope that a block slides down.
-        const AlongMotion &a        = along[i];
-        const double       rounding = groups[i].rounding;
-        const double       tilt     = a.changed / a.largest;
-        if (!(tilt <= 1e2 * rounding) ||
-            !(std::abs(a.work) >
-              std::max(1e-10, 1e3 * std::max(tilt, rounding)) * a.scale))
-          continue;
-        std::ostringstream proof;
-        proof.precision(2);
-        proof << "the loads do work along a motion that no support or "
-                 "joint resists, the "
-              << describe_motion<dim>(v[i], groups[i].centre, groups[i].size)
-              << " of " << groups[i].who << ": their work along it is "
-              << std::abs(a.work) / a.scale
-              << " of sum |f| |u|, and it changes no gap by more than "
-              << a.changed / a.largest
-              << " of the largest displacement (found from the supports and "
-                 "the loads before solving)";
-        return proof.str();
-      }
-    return loads_driving_a_slide(contacts, slides, load);
+      if (groups[i].held_by_signorini)
+        escapes[i] = escape_motion(groups[i], loads[i]);
+    return proof(escapes, true);
   }
 
   template std::vector<FreeSlides<2>>
@@ -712,7 +918,7 @@ namespace unilateral::masonry
   template unsigned int
   n_blocks_of(const ContactSet<3> &contacts);
   template std::vector<std::string>
-  free_rigid_motions(const ContactSet<2> &contacts);
+  free_rigid_motions(const ContactSet<2> &contacts, bool &held_by_signorini);
   template std::vector<std::string>
-  free_rigid_motions(const ContactSet<3> &contacts);
+  free_rigid_motions(const ContactSet<3> &contacts, bool &held_by_signorini);
 } // namespace unilateral::masonry

@@ -300,7 +300,7 @@ namespace unilateral::masonry
                     " unknowns, n_c = " +
                     std::to_string(problem_sizes.n_constraints) +
                     " constraints");
-    free_motions = free_rigid_motions(contacts);
+    free_motions = free_rigid_motions(contacts, held_by_signorini);
     slides       = free_slides(contacts);
     for (const std::string &line : free_motions)
       context.stage(registered_name, "note: " + line);
@@ -380,8 +380,8 @@ namespace unilateral::masonry
   MasonryScene<dim>::proof_of_no_solution()
   {
     // The loads cost an assembly of the residual: only where something
-    // moves freely.
-    if (free_motions.empty() && slides.empty())
+    // moves freely, or Signorini supports alone hold it.
+    if (free_motions.empty() && slides.empty() && !held_by_signorini)
       return "";
     std::vector<double> load = residual_forces<dim>(
       state->discretisation,

@@ -133,11 +133,14 @@ namespace unilateral::masonry
    * origin) is not free.
    * Returns one line per group with free motions, saying which blocks and
    * how they can move (the first ten groups, then one line counting the
-   * rest); empty if every group is held.
+   * rest); empty if every group is held. Sets @p held_by_signorini if some
+   * group is held in some motion by its Signorini supports alone, which
+   * only push: whether they hold it then depends on where the loads push
+   * (loads_driving_a_free_motion).
    */
   template <int dim>
   std::vector<std::string>
-  free_rigid_motions(const ContactSet<dim> &contacts);
+  free_rigid_motions(const ContactSet<dim> &contacts, bool &held_by_signorini);
 
   /**
    * Sets of blocks that can slide along their joints, in one direction: a
@@ -182,6 +185,14 @@ namespace unilateral::masonry
    * proof cannot see this where the factorisation meets a pivot above round-off
    * along the motion and moves the structure by 1e9 (a block on a frictionless
    * slope).
+   *
+   * Also for a group that its Signorini supports alone hold in some motion
+   * (free_rigid_motions' @p held_by_signorini): the proof that they cannot
+   * balance its loads by pushing (rigid-body statics: a block on a slope
+   * whose other support lies uphill, a review found it 'converged' at a
+   * loose 'KKT tolerance' with a motion of 1e9), a rigid motion that opens
+   * them and along which the loads do work, judged as above with only the
+   * gaps that it closes counted.
    * @p load: the nodal loads f at every DOF.
    */
   template <int dim>
