@@ -414,10 +414,14 @@ namespace unilateral
           if (error.line() == 0)
             throw InputError("cannot read parameter file '" + file +
                              "': " + error.message());
-          throw InputError("parameter file '" + file + "' is not valid " +
-                           (kind == "json" ? "JSON" : "XML") + ": line " +
-                           std::to_string(error.line()) + ": " +
-                           error.message());
+          throw InputError(
+            "parameter file '" + file + "' is not valid " +
+            (kind == "json" ? "JSON" : "XML") + ": line " +
+            std::to_string(error.line()) + ": " + error.message() +
+            (kind == "json" || error.message() == "unexpected end of data" ?
+               "" :
+               " (in XML a '<' or '&' inside a value is written '&lt;' or "
+               "'&amp;': 'base where x &lt; s')"));
         }
       if (kind == "json")
         return tree;

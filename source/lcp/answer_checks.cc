@@ -138,9 +138,13 @@ namespace unilateral::lcp
       return;
     // The sizes that met, for the user to see which is out of range.
     double largest_u = 0;
+    bool   finite_u  = false;
     for (const double value : solution.u)
       if (std::isfinite(value))
-        largest_u = std::max(largest_u, std::abs(value));
+        {
+          largest_u = std::max(largest_u, std::abs(value));
+          finite_u  = true;
+        }
     // The bounds too: an obstacle or a gap of 1e300 overflows as well.
     double largest_bound = 0;
     for (const double bound : problem.lower_bound)
@@ -149,8 +153,12 @@ namespace unilateral::lcp
     std::ostringstream message;
     message << std::setprecision(3)
             << "the answer is not a finite number (NaN or infinity in " << what
-            << "): displacements up to " << largest_u << " under loads up to "
-            << problem.b.lpNorm<Eigen::Infinity>()
+            << "): ";
+    if (finite_u)
+      message << "displacements up to " << largest_u;
+    else
+      message << "displacements with no finite entry";
+    message << " under loads up to " << problem.b.lpNorm<Eigen::Infinity>()
             << " with a stiffness (mean diagonal of A) of "
             << (problem.size() > 0 ? problem.A.diagonal().mean() : 0.0)
             << " and bounds (obstacle, gaps) up to " << largest_bound

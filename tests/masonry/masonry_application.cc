@@ -267,6 +267,12 @@ main()
             "</Parameters>\n",
             ".xml");
   bad_input("XML: not closed", xml_start, ".xml");
+  bad_input("XML: a '<' in a value",
+            xml_start +
+              "<Masonry><Boundary_20conditions><Signorini><value>base where "
+              "x < s</value></Signorini></Boundary_20conditions></Masonry>"
+              "</ParameterHandler>\n",
+            ".xml");
   bad_input("a file ending in .txt", masonry_prm(""), ".txt");
   {
     // Valid JSON and XML files run (names as the listing gives them, and

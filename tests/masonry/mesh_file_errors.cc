@@ -122,6 +122,35 @@ main()
       two_squares(1, 2),
       "  subsection Materials\n    set Assignment = physical tag\n"
       "    set Tags = 1\n  end\n");
+  // Named groups: the message gives the number too, which 'Tags' may
+  // use (a review could not tell which number to write); a tag named
+  // twice in 'Tags' is refused as such (before: only the missing one).
+  {
+    const std::string named =
+      header +
+      "$PhysicalNames\n3\n1 7 \"base\"\n2 1 \"stone\"\n2 4 \"lintel\"\n"
+      "$EndPhysicalNames\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
+      "5 1 0 0\n6 2 0 0\n7 2 1 0\n8 1 1 0\n$EndNodes\n$Elements\n4\n"
+      "1 3 2 1 1 1 2 3 4\n2 3 2 4 2 5 6 7 8\n3 1 2 7 11 1 2\n"
+      "4 1 2 7 12 5 6\n$EndElements\n";
+    bad("a named block tag with no material",
+        named,
+        "  subsection Materials\n    set Assignment = physical tag\n"
+        "    set Young's modulus = 4e3, 4e3\n    set Poisson's ratio = 0.3, "
+        "0.3\n    set Density = 1, 1\n    set Tags = stone, 2\n  end\n");
+    bad("a tag named twice",
+        named,
+        "  subsection Materials\n    set Assignment = physical tag\n"
+        "    set Young's modulus = 4e3, 4e3\n    set Poisson's ratio = 0.3, "
+        "0.3\n    set Density = 1, 1\n    set Tags = stone, stone\n  end\n");
+  }
+  // Two squares of one entity and group that meet only at the corner
+  // (1, 1): taken for one block until 2026-11-30, hung from that node.
+  bad("cells of one group meeting only at a corner",
+      header + "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
+               "$Nodes\n7\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 2 1 0\n"
+               "6 2 2 0\n7 1 2 0\n$EndNodes\n$Elements\n3\n1 3 2 1 1 1 2 3 4\n"
+               "2 3 2 1 1 3 5 6 7\n3 1 2 7 11 1 2\n$EndElements\n");
   bad("a support that is not a boundary",
       two_squares(1),
       "  subsection Boundary conditions\n    set Fixed = springing\n  end\n");

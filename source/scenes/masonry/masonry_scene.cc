@@ -130,8 +130,13 @@ namespace unilateral::masonry
                 known += (known.empty() ? "" : ", ") + tag;
               throw InputError(
                 "block " + std::to_string(b) + " of '" + file +
-                "' has the physical tag '" + blocks.tag_of_block[b] +
-                "', which no material class has ('Masonry/Materials/Tags' = " +
+                "' has the physical tag '" + blocks.tag_of_block[b] + "'" +
+                (blocks.tag_of_block[b] ==
+                     std::to_string(blocks.tag_number_of_block[b]) ?
+                   "" :
+                   " (number " + std::to_string(blocks.tag_number_of_block[b]) +
+                     ")") +
+                ", which no material class has ('Masonry/Materials/Tags' = " +
                 known + "): add it to 'Tags' with its class");
             }
           result[b] = static_cast<unsigned int>(found - tags.begin());

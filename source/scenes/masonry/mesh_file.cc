@@ -1125,6 +1125,46 @@ namespace unilateral::masonry
               .push_back(
                 {cell->face(f)->center(), {b, cell->face(f)->boundary_id()}});
       }
+    // Cells of one body that meet only at a vertex (in 3D also only along
+    // an edge) are not one block: they would turn about that node as one
+    // body, where two blocks touching at a corner make no joint (a review:
+    // the upper of two squares of one entity touching at a corner ended
+    // 'converged', hung from that node). Refused: a block's cells share
+    // faces. After the test of duplicated nodes, which part a block so too
+    // and are named as such.
+    {
+      std::vector<unsigned int> by_faces(n_cells);
+      std::iota(by_faces.begin(), by_faces.end(), 0u);
+      const auto root = [&](unsigned int c) {
+        while (by_faces[c] != c)
+          c = by_faces[c] = by_faces[by_faces[c]];
+        return c;
+      };
+      for (const auto &cell : file_mesh.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (!cell->at_boundary(f) &&
+              same_body(cell->active_cell_index(),
+                        cell->neighbor(f)->active_cell_index()))
+            by_faces[root(cell->active_cell_index())] =
+              root(cell->neighbor(f)->active_cell_index());
+      for (unsigned int v = 0; v < cells_at_vertex.size(); ++v)
+        for (const unsigned int c : cells_at_vertex[v])
+          for (const unsigned int d : cells_at_vertex[v])
+            if (block[c] == block[d] && root(c) != root(d))
+              {
+                std::ostringstream message;
+                message << "cells of block " << block[c] << " (physical group '"
+                        << result.tag_of_block[block[c]]
+                        << "') meet only at the node ("
+                        << file_mesh.get_vertices()[v]
+                        << "), not along a face: a block's cells must share "
+                           "faces; put each part into its own entity or "
+                           "physical group (two blocks touching at a corner), "
+                           "or mesh them as one region";
+                fail(file_name, message.str());
+              }
+    }
+
     triangulation.clear();
     try
       {

@@ -569,6 +569,15 @@ namespace unilateral::masonry
                     "has " + std::to_string(tags.size()) + " entries for " +
                       std::to_string(classes.size()) +
                       " material classes; give one tag per class");
+    for (std::size_t k = 1; k < tags.size(); ++k)
+      check_parameter(std::find(tags.begin(), tags.begin() + k, tags[k]) ==
+                        tags.begin() + k,
+                      materials_section,
+                      "Tags",
+                      tag_text,
+                      "names '" + tags[k] +
+                        "' twice: a physical group belongs to one class; "
+                        "give each class its own tags");
     check_parameter(assignment != MaterialAssignment::single ||
                       classes.size() == 1,
                     materials_section,
