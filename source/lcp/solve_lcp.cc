@@ -134,19 +134,23 @@ namespace unilateral::lcp
                          "method");
       PhaseTimer timer(report, "solve");
       // Every sparse factorisation the method makes, however deep, runs
-      // over the ranks while this scope is open.
+      // over the ranks while this scope is open. Said where one ran: a
+      // method may factorise nothing (TNNMG on the plate), which was
+      // reported as factorising over the ranks (a review).
       std::optional<DistributedFactorisations> over_ranks;
       if (attempt.parameters.factorises_over_ranks(info))
+        over_ranks.emplace(MPI_COMM_WORLD);
+      const unsigned int before = report.counters.numeric_factorisations;
+      info.create(attempt.parameters, attempt.parameters.of(info.name))
+        ->solve(problem, solution, report, progress);
+      if (over_ranks && report.counters.numeric_factorisations > before)
         {
-          over_ranks.emplace(MPI_COMM_WORLD);
           const unsigned int n_ranks = ranks::n_ranks();
           report.set_figure("factorisation_ranks", n_ranks);
           if (progress != nullptr)
             *progress << "  factorisations over " << n_ranks
                       << (n_ranks == 1 ? " rank" : " ranks") << " (MUMPS)\n";
         }
-      info.create(attempt.parameters, attempt.parameters.of(info.name))
-        ->solve(problem, solution, report, progress);
     }
 
     // The regularisation the attempt's method gets (relative eps, 0: none):
