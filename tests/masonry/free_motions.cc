@@ -48,6 +48,7 @@
 //    distance over the faces' length).
 #include "../application_test_tools.h"
 
+#include <array>
 #include <cmath>
 #include <regex>
 #include <sstream>
@@ -102,9 +103,10 @@ namespace
     if (proof != std::string::npos)
       std::cout << "  the error says so (no equilibrium)\n";
   }
-  // One unit block of 2 x 2 cells on its base, rotated by theta degrees.
+  /// The 9 nodes of a unit square of 2 x 2 cells turned by @p theta
+  /// degrees about its corner, moved by (shift, shift).
   std::string
-  block_on_slope(const double theta, const std::string &tolerance)
+  turned_square_nodes(const double theta, const double shift = 0)
   {
     const double pi = 3.14159265358979323846;
     const double c = std::cos(theta * pi / 180), s = std::sin(theta * pi / 180);
@@ -112,12 +114,20 @@ namespace
     nodes.precision(17);
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i)
-        nodes << 3 * j + i + 1 << " " << c * 0.5 * i - s * 0.5 * j << " "
-              << s * 0.5 * i + c * 0.5 * j << " 0\n";
+        nodes << 3 * j + i + 1 << " " << shift + c * 0.5 * i - s * 0.5 * j
+              << " " << shift + s * 0.5 * i + c * 0.5 * j << " 0\n";
+    return nodes.str();
+  }
+
+  // One unit block of 2 x 2 cells on its base, rotated by theta degrees.
+  std::string
+  block_on_slope(const double theta, const std::string &tolerance)
+  {
+    const std::string nodes = turned_square_nodes(theta);
     write("slope.msh",
           "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n"
           "1 101 \"base\"\n$EndPhysicalNames\n$Nodes\n9\n" +
-            nodes.str() +
+            nodes +
             "$EndNodes\n$Elements\n6\n1 1 2 101 101 1 2\n"
             "2 1 2 101 101 2 3\n3 3 2 1 1 1 2 5 4\n4 3 2 1 1 2 3 6 5\n"
             "5 3 2 1 1 4 5 8 7\n6 3 2 1 1 5 6 9 8\n$EndElements\n");
@@ -285,18 +295,10 @@ namespace
                   const double       shift,
                   const std::string &tolerance)
   {
-    const double pi = 3.14159265358979323846;
-    const double c = std::cos(phi * pi / 180), s = std::sin(phi * pi / 180);
-    std::ostringstream nodes;
-    nodes.precision(17);
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i)
-        nodes << 3 * j + i + 1 << " " << shift + c * 0.5 * i - s * 0.5 * j
-              << " " << shift + s * 0.5 * i + c * 0.5 * j << " 0\n";
     write("corner.msh",
           "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n"
           "1 101 \"base\"\n1 102 \"side\"\n$EndPhysicalNames\n$Nodes\n9\n" +
-            nodes.str() +
+            turned_square_nodes(phi, shift) +
             "$EndNodes\n$Elements\n8\n1 1 2 101 101 1 2\n"
             "2 1 2 101 101 2 3\n3 1 2 102 102 4 1\n4 1 2 102 102 7 4\n"
             "5 3 2 1 1 1 2 5 4\n6 3 2 1 1 2 3 6 5\n7 3 2 1 1 4 5 8 7\n"
@@ -373,36 +375,60 @@ namespace
     return "cube.prm";
   }
 
-  /// The size of the reaction force on @p boundary in summary.json (2D or
-  /// 3D).
+  /// The reaction force on @p boundary in summary.json (2D or 3D, z = 0
+  /// in 2D; NaN if it has none).
+  std::array<double, 3>
+  reaction_force(const std::string &json, const std::string &boundary)
+  {
+    std::smatch found;
+    if (!std::regex_search(json,
+                           found,
+                           std::regex("\"" + boundary +
+                                      "\": *\\{\\s*\"force\": *\\[\\s*"
+                                      "([-+0-9.eE]+),\\s*([-+0-9.eE]+)"
+                                      "(?:,\\s*([-+0-9.eE]+))?")))
+      return {{std::nan(""), std::nan(""), std::nan("")}};
+    return {{std::stod(found[1]),
+             std::stod(found[2]),
+             found[3].matched ? std::stod(found[3]) : 0.0}};
+  }
+
   double
   reaction_size(const std::string &json, const std::string &boundary)
   {
-    std::smatch found;
-    if (std::regex_search(json,
-                          found,
-                          std::regex("\"" + boundary +
-                                     "\": *\\{\\s*\"force\": *\\[\\s*"
-                                     "([-+0-9.eE]+),\\s*([-+0-9.eE]+)"
-                                     "(?:,\\s*([-+0-9.eE]+))?")))
-      return std::hypot(std::stod(found[1]),
-                        std::stod(found[2]),
-                        found[3].matched ? std::stod(found[3]) : 0.0);
-    return std::nan("");
+    const auto f = reaction_force(json, boundary);
+    return std::hypot(f[0], f[1], f[2]);
+  }
+
+  /**
+   * What a block or cube in a corner turned by @p phi degrees ended with:
+   * where it converged, whether its reactions are rigid-body statics' (the
+   * base cos(phi), the side sin(phi) of its weight 1); else whether the
+   * scene proved before solving that it slides.
+   */
+  std::string
+  corner_verdict(const Result      &result,
+                 const std::string &summary_file,
+                 const double       phi)
+  {
+    const double pi = 3.14159265358979323846;
+    if (result.code != 0)
+      return std::string(", no equilibrium before solving: ") +
+             yes_no(result.err.find("could resist only by pulling") !=
+                    std::string::npos);
+    const std::string summary = read(summary_file);
+    return std::string(", reactions cos(phi) and sin(phi): ") +
+           yes_no(std::abs(reaction_size(summary, "base") -
+                           std::cos(phi * pi / 180)) < 1e-8 &&
+                  std::abs(reaction_size(summary, "side") -
+                           std::sin(phi * pi / 180)) < 1e-8);
   }
 
   /// The vertical force of the reaction on @p boundary in summary.json.
   double
   reaction(const std::string &json, const std::string &boundary)
   {
-    std::smatch found;
-    if (std::regex_search(json,
-                          found,
-                          std::regex("\"" + boundary +
-                                     "\": *\\{\\s*\"force\": *\\[\\s*"
-                                     "[-+0-9.eE]+,\\s*([-+0-9.eE]+)")))
-      return std::stod(found[1]);
-    return std::nan("");
+    return reaction_force(json, boundary)[1];
   }
 } // namespace
 
@@ -537,23 +563,12 @@ main()
                                                             {-1e-3, 0, "1e-8"},
                                                             {91, 0, "1e-8"}})
     {
-      const double      pi      = 3.14159265358979323846;
-      const Result      corner  = run({block_in_corner(phi, shift, tolerance)});
-      const std::string summary = read("results/corner/summary.json");
+      const Result corner = run({block_in_corner(phi, shift, tolerance)});
       std::cout << "a block in a corner turned by " << phi << " degrees, at "
                 << shift << ", KKT tolerance " << tolerance << ": exit code "
-                << corner.code;
-      if (corner.code == 0)
-        std::cout << ", reactions cos(phi) and sin(phi): "
-                  << yes_no(std::abs(reaction_size(summary, "base") -
-                                     std::cos(phi * pi / 180)) < 1e-8 &&
-                            std::abs(reaction_size(summary, "side") -
-                                     std::sin(phi * pi / 180)) < 1e-8);
-      else
-        std::cout << ", no equilibrium before solving: "
-                  << yes_no(corner.err.find("could resist only by pulling") !=
-                            std::string::npos);
-      std::cout << "\n";
+                << corner.code
+                << corner_verdict(corner, "results/corner/summary.json", phi)
+                << "\n";
     }
 
   // The same in 3D, free along z: the escape is found among the motions
@@ -562,22 +577,11 @@ main()
   // escape about the line they leave free.
   for (const double phi : {10.0, -1.0, -1e-3})
     {
-      const double      pi      = 3.14159265358979323846;
-      const Result      cube    = run({cube_in_corner(phi)});
-      const std::string summary = read("results/cube/summary.json");
+      const Result cube = run({cube_in_corner(phi)});
       std::cout << "a cube in a corner turned by " << phi
-                << " degrees, free along z: exit code " << cube.code;
-      if (cube.code == 0)
-        std::cout << ", reactions cos(phi) and sin(phi): "
-                  << yes_no(std::abs(reaction_size(summary, "base") -
-                                     std::cos(phi * pi / 180)) < 1e-8 &&
-                            std::abs(reaction_size(summary, "side") -
-                                     std::sin(phi * pi / 180)) < 1e-8);
-      else
-        std::cout << ", no equilibrium before solving: "
-                  << yes_no(cube.err.find("could resist only by pulling") !=
-                            std::string::npos);
-      std::cout << "\n";
+                << " degrees, free along z: exit code " << cube.code
+                << corner_verdict(cube, "results/cube/summary.json", phi)
+                << "\n";
     }
 
   // Courses that slide on each other (free_slides): a wall on a fixed base
