@@ -421,17 +421,16 @@ namespace unilateral::masonry
      * loads by pushing. Such a motion exists exactly where no forces mu >=
      * 0 of the Signorini supports (and any of the others) balance the
      * group's loads @p loads as a rigid body (Farkas; the forces of the
-     * joints within the group cancel): the statics, N^T (F + R^T mu) = 0
-     * in the basis N of the motions its other supports leave free (F: the
-     * loads; R: the Signorini rows), solved by non-negative least squares.
-     * Their
-     * residual r, where not zero, gives v = -N r: R v >= 0 and F . v =
-     * |r|^2 > 0. That is the loads' direction among the motions that keep
-     * the supports which push (mu > 0) and the other supports, and is
-     * computed so, from their rows: r itself is the difference of forces
-     * far larger than it where the loads nearly balance (a block on a
-     * slope of 1e-3 degrees), and as -N r the motion closed the pushing
-     * supports by far more than their rounding.
+     * joints within the group cancel): the statics N^T (F + R^T mu) = 0, in
+     * the basis N of the motions its other supports leave free (F: the
+     * loads, R: the Signorini rows), solved by non-negative least squares.
+     * Their residual r, where not zero, gives the motion -N r: R (-N r) >=
+     * 0 and F . (-N r) = |r|^2 > 0. That is the loads' direction among the
+     * motions that keep the supports which push (mu > 0) and the other
+     * supports, and is computed so, from those rows: r itself is the
+     * difference of forces far larger than it where the loads nearly
+     * balance, and as -N r the motion closed the pushing supports by far
+     * more than their rounding (a block on a slope of 1e-3 degrees).
      */
     template <int dim>
     RigidVector<dim>
