@@ -1155,7 +1155,8 @@ namespace unilateral::masonry
                 std::ostringstream message;
                 message << "cells of block " << block[c] << " (physical group '"
                         << result.tag_of_block[block[c]]
-                        << "') meet only at the node ("
+                        << "') meet only at a corner"
+                        << (dim == 3 ? " or an edge" : "") << ", at the node ("
                         << file_mesh.get_vertices()[v]
                         << "), not along a face: a block's cells must share "
                            "faces; put each part into its own entity or "
