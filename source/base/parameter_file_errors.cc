@@ -256,15 +256,19 @@ namespace unilateral
     using Tree = boost::property_tree::ptree;
 
     /// deal.II's mangled names ('Blocks_20per_20side', as XML needs them)
-    /// read back; a '_' not followed by two hexadecimal digits stays.
+    /// read back; a '_' not followed by two lower-case hexadecimal digits
+    /// (all that deal.II's mangling writes and its demangling reads)
+    /// stays.
     std::string
     demangled(const std::string &name)
     {
       std::string result;
       for (std::size_t i = 0; i < name.size(); ++i)
         if (name[i] == '_' && i + 2 < name.size() &&
-            std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
+            std::string("0123456789abcdef").find(name[i + 1]) !=
+              std::string::npos &&
+            std::string("0123456789abcdef").find(name[i + 2]) !=
+              std::string::npos)
           {
             result +=
               static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
@@ -343,8 +347,9 @@ namespace unilateral
           // Read as parameters by deal.II's reader, which then refuses them.
           if (name.empty())
             return in_file + where(path) +
-                   " holds a list ([...]): give each parameter as \"name\": "
-                   "\"value\", and a list of values as one string (\"1, 2\")";
+                   " holds an entry without a name (a list [...] reads so): "
+                   "give each parameter as \"name\": \"value\", and a list "
+                   "of values as one string (\"1, 2\")";
           if (name == "<xmlcomment>")
             return in_file + "an XML comment in " + where(path) +
                    ": deal.II's reader takes it for a parameter: remove it";
