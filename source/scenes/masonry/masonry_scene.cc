@@ -385,7 +385,7 @@ namespace unilateral::masonry
   MasonryScene<dim>::proof_of_no_solution()
   {
     // The loads cost an assembly of the residual: only where something
-    // moves freely, or Signorini supports alone hold it.
+    // moves freely, or Signorini supports, which only push, hold it.
     if (free_motions.empty() && slides.empty() && !held_by_signorini)
       return "";
     std::vector<double> load = residual_forces<dim>(

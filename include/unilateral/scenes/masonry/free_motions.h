@@ -133,10 +133,10 @@ namespace unilateral::masonry
    * origin) is not free.
    * Returns one line per group with free motions, saying which blocks and
    * how they can move (the first ten groups, then one line counting the
-   * rest); empty if every group is held. Sets @p held_by_signorini if some
-   * group is held in some motion by its Signorini supports alone, which
-   * only push: whether they hold it then depends on where the loads push
-   * (loads_driving_a_free_motion).
+   * rest); empty if every group is held. Sets @p held_by_signorini if the
+   * Signorini supports of some group hold it in a motion that its other
+   * supports leave free: they only push, so whether they hold it depends
+   * on where the loads push (loads_driving_a_free_motion).
    */
   template <int dim>
   std::vector<std::string>
@@ -186,8 +186,9 @@ namespace unilateral::masonry
    * along the motion and moves the structure by 1e9 (a block on a frictionless
    * slope).
    *
-   * Also for a group that its Signorini supports alone hold in some motion
-   * (free_rigid_motions' @p held_by_signorini): the proof that they cannot
+   * Also for a group that its Signorini supports hold in a motion its other
+   * supports leave free (free_rigid_motions' @p held_by_signorini): the
+   * proof that they cannot
    * balance its loads by pushing (rigid-body statics: a block on a slope
    * whose other support lies uphill, a review found it 'converged' at a
    * loose 'KKT tolerance' with a motion of 1e9), a rigid motion that opens

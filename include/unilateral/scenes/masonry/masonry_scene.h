@@ -294,8 +294,9 @@ namespace unilateral::masonry
     /// The groups of blocks that some rigid motion moves past every support
     /// (free_rigid_motions), one line each.
     std::vector<std::string> free_motions;
-    /// Whether Signorini supports alone hold some group in some motion
-    /// (free_rigid_motions): then the loads decide whether it stands.
+    /// Whether the Signorini supports of some group hold it in a motion
+    /// its other supports leave free (free_rigid_motions): then the loads
+    /// decide whether it stands.
     bool held_by_signorini = false;
     /// A mechanism of the answer's closed contacts (answer_mechanism), or
     /// empty.
