@@ -278,6 +278,28 @@ def define_cases():
          text="set Scene = masonry\nsubsection Masonry\n"
          "  set Blocks per side = 2\n")
     case("cli", "an 'end' too many", "error", text=good_masonry + "end\n")
+    # JSON and XML parameter files: the program's own messages.
+    json_wall = ('{ "Scene": "masonry", "Output": { "Directory": "results" }, '
+                 '"Masonry": { "Blocks per side": %s } }')
+    case("cli", "JSON: a misspelt name", "error", args=["case.json"],
+         files={"case.json": json_wall % '2, "Refinment": "1"'},
+         fragments=["Refinment", "did you mean 'Refinement'"])
+    case("cli", "JSON: a value its pattern refuses", "error",
+         args=["case.json"], files={"case.json": json_wall % '"abc"'},
+         fragments=["Masonry/Blocks per side", "abc"])
+    case("cli", "JSON: not valid", "error", args=["case.json"],
+         files={"case.json": '{ "Scene": "masonry", '},
+         fragments=["case.json", "not valid JSON"])
+    case("cli", "XML: a '<' in a value", "error", args=["case.xml"],
+         files={"case.xml": "<ParameterHandler><Masonry><Boundary_20conditions>"
+                "<Signorini>base where x < s</Signorini>"
+                "</Boundary_20conditions></Masonry></ParameterHandler>\n"},
+         fragments=["case.xml", "&lt;"])
+    case("cli", "a parameter file ending in .txt", "error", args=["case.txt"],
+         files={"case.txt": good_masonry}, fragments=[".prm, .json or .xml"])
+    case("cli", "a valid JSON file, copied as parameters.json", "valid",
+         args=["case.json"], files={"case.json": json_wall % "2"},
+         check=exists("results/case/parameters.json"))
     case("cli", "parameter file without read permission", "valid" if root
          else "error", text=good_masonry,
          setup=lambda d: os.chmod(os.path.join(d, "case.prm"), 0),
