@@ -40,8 +40,8 @@ namespace unilateral
     /// ParameterHandler::parse_input and scan_line, whose rules this
     /// repeats: lines ending in '\' joined to the next, then comments cut,
     /// tabs made spaces; keywords in lower or upper case; included files
-    /// read in place): the subsection each line lies in, and what each
-    /// subsection declares.
+    /// read in place): the subsection each line lies in, and the values
+    /// set.
     struct Walk
     {
       /// Per file (as the parser names it: an included one by its include
@@ -54,8 +54,6 @@ namespace unilateral
       std::string path_at_end;
       /// The last value set for each "path/name".
       std::map<std::string, std::string> values;
-      /// Per subsection path: the entries and the subsections in it.
-      std::map<std::string, std::vector<std::string>> entries, subsections;
     };
 
     bool
@@ -106,9 +104,7 @@ namespace unilateral
             at_line[n] = joined(path);
           if (starts_with(line, "subsection "))
             {
-              const std::string name = trimmed(line.substr(11));
-              result.subsections[joined(path)].push_back(name);
-              path.push_back(name);
+              path.push_back(trimmed(line.substr(11)));
             }
           else if (starts_with(line, "end"))
             {
@@ -119,7 +115,6 @@ namespace unilateral
             {
               const std::size_t equals = line.find('=');
               const std::string name   = trimmed(line.substr(4, equals - 4));
-              result.entries[joined(path)].push_back(name);
               if (equals != std::string::npos)
                 result.values[joined(path) + "/" + name] =
                   trimmed(line.substr(equals + 1));
@@ -323,6 +318,19 @@ namespace unilateral
         }
     }
 
+    /// What @p prm declares, from its JSON listing.
+    Declared
+    declared_parameters(const dealii::ParameterHandler &prm)
+    {
+      std::stringstream listing;
+      prm.print_parameters(listing, dealii::ParameterHandler::JSON);
+      Tree listed;
+      boost::property_tree::read_json(listing, listed);
+      Declared declared;
+      collect(listed, "", declared);
+      return declared;
+    }
+
     /// The first thing in @p node (at @p path of @p file) that deal.II's
     /// reader refuses, said for the user; empty if none.
     std::string
@@ -487,17 +495,11 @@ namespace unilateral
     const std::string kind = parameter_file_kind(parameter_file);
     if (kind != "json" && kind != "xml")
       return;
-    const Tree tree = structured_tree(parameter_file, kind);
-    Declared   declared;
-    {
-      std::stringstream listing;
-      prm.print_parameters(listing, dealii::ParameterHandler::JSON);
-      Tree listed;
-      boost::property_tree::read_json(listing, listed);
-      collect(listed, "", declared);
-    }
     const std::string refusal =
-      first_refusal(tree, "", declared, parameter_file);
+      first_refusal(structured_tree(parameter_file, kind),
+                    "",
+                    declared_parameters(prm),
+                    parameter_file);
     if (!refusal.empty())
       throw InputError(refusal);
   }
@@ -572,13 +574,7 @@ namespace unilateral
                "directory, not from the including file's folder)";
       }
 
-    Walk declared;
-    {
-      std::stringstream listing;
-      prm.print_parameters(listing, Handler::ShortPRM);
-      std::vector<std::string> top;
-      walk(listing, "", top, declared);
-    }
+    const Declared declared = declared_parameters(prm);
 
     if (invalid_value)
       {

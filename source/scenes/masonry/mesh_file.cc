@@ -1020,14 +1020,15 @@ namespace unilateral::masonry
             cell->active_cell_index());
       }
 
-    // Blocks: cells sharing a vertex, with the same entity and tag.
-    std::vector<unsigned int> parent(n_cells);
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](unsigned int c) {
+    // Blocks: cells sharing a vertex, with the same entity and tag (sets
+    // of cells by their roots in a parent list).
+    const auto find = [](std::vector<unsigned int> &parent, unsigned int c) {
       while (parent[c] != c)
         c = parent[c] = parent[parent[c]];
       return c;
     };
+    std::vector<unsigned int> parent(n_cells);
+    std::iota(parent.begin(), parent.end(), 0u);
     auto same_body = [&](const unsigned int a, const unsigned int b) {
       const FileCell<dim> &x = scan.cells[file_cell[a]];
       const FileCell<dim> &y = scan.cells[file_cell[b]];
@@ -1037,7 +1038,7 @@ namespace unilateral::masonry
       for (std::size_t i = 1; i < cells.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
           if (same_body(cells[i], cells[j]))
-            parent[find(cells[i])] = find(cells[j]);
+            parent[find(parent, cells[i])] = find(parent, cells[j]);
     std::vector<int> block_of_root(n_cells, -1);
     MeshFileBlocks   result;
     result.simplex = scan.simplex;
@@ -1045,7 +1046,7 @@ namespace unilateral::masonry
     for (const auto &cell : file_mesh.active_cell_iterators())
       {
         const unsigned int c    = cell->active_cell_index();
-        const unsigned int root = find(c);
+        const unsigned int root = find(parent, c);
         if (block_of_root[root] < 0)
           {
             block_of_root[root] = static_cast<int>(result.tag_of_block.size());
@@ -1135,11 +1136,7 @@ namespace unilateral::masonry
     {
       std::vector<unsigned int> by_faces(n_cells);
       std::iota(by_faces.begin(), by_faces.end(), 0u);
-      const auto root = [&](unsigned int c) {
-        while (by_faces[c] != c)
-          c = by_faces[c] = by_faces[by_faces[c]];
-        return c;
-      };
+      const auto root = [&](const unsigned int c) { return find(by_faces, c); };
       for (const auto &cell : file_mesh.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (!cell->at_boundary(f) &&
