@@ -1,3 +1,4 @@
+#include <unilateral/base/disjoint_sets.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/scenes/masonry/change_of_variables.h>
 
@@ -19,48 +20,6 @@ namespace unilateral::masonry
 
   namespace
   {
-    // Union-find with path halving and union by size.
-    class DisjointSets
-    {
-    public:
-      explicit DisjointSets(const std::size_t n)
-        : parent(n)
-        , size(n, 1)
-      {
-        std::iota(parent.begin(), parent.end(), std::size_t(0));
-      }
-
-      std::size_t
-      find(std::size_t v)
-      {
-        while (parent[v] != v)
-          {
-            parent[v] = parent[parent[v]];
-            v         = parent[v];
-          }
-        return v;
-      }
-
-      /// False if @p a and @p b were already connected.
-      bool
-      unite(std::size_t a, std::size_t b)
-      {
-        a = find(a);
-        b = find(b);
-        if (a == b)
-          return false;
-        if (size[a] < size[b])
-          std::swap(a, b);
-        parent[b] = a;
-        size[a] += size[b];
-        return true;
-      }
-
-    private:
-      std::vector<std::size_t> parent;
-      std::vector<std::size_t> size;
-    };
-
     constexpr std::size_t none = static_cast<std::size_t>(-1);
 
     /// One edge of a class graph: a constraint (joint or Signorini), a

@@ -1,3 +1,4 @@
+#include <unilateral/base/disjoint_sets.h>
 #include <unilateral/base/text.h>
 #include <unilateral/scenes/masonry/free_motions.h>
 
@@ -225,19 +226,19 @@ namespace unilateral::masonry
       if (n_nodes == 0)
         return {};
       const unsigned int n_blocks = n_blocks_of(contacts);
-      BlockGroups        groups(n_blocks);
+      DisjointSets       groups(n_blocks);
       for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
         if (contacts.constraints[k].kind == ConstraintKind::joint)
-          groups.join(contacts.blocks[k][0], contacts.blocks[k][1]);
+          groups.unite(contacts.blocks[k][0], contacts.blocks[k][1]);
 
       // Each group's centre and size (the largest distance of a node from
       // it), so that rotations and translations are rows of one scale.
       std::vector<Group<dim>> group(n_blocks);
       for (unsigned int b = 0; b < n_blocks; ++b)
-        group[groups.root(b)].blocks.push_back(b);
+        group[groups.find(b)].blocks.push_back(b);
       for (std::size_t a = 0; a < n_nodes; ++a)
         {
-          Group<dim> &g = group[groups.root(contacts.node_block[a])];
+          Group<dim> &g = group[groups.find(contacts.node_block[a])];
           if (g.n_nodes++ == 0)
             g.first_node = static_cast<unsigned int>(a);
           for (unsigned int c = 0; c < dim; ++c)
@@ -248,7 +249,7 @@ namespace unilateral::masonry
           g.centre[c] /= g.n_nodes;
       for (std::size_t a = 0; a < n_nodes; ++a)
         {
-          Group<dim> &g        = group[groups.root(contacts.node_block[a])];
+          Group<dim> &g        = group[groups.find(contacts.node_block[a])];
           double      distance = 0;
           for (unsigned int c = 0; c < dim; ++c)
             {
@@ -262,7 +263,7 @@ namespace unilateral::masonry
 
       const auto add_support = [&](const unsigned int             node,
                                    const std::array<double, dim> &normal) {
-        Group<dim> &g = group[groups.root(contacts.node_block[node])];
+        Group<dim> &g = group[groups.find(contacts.node_block[node])];
         const RigidVector<dim> row =
           support_row<dim>(normal,
                            contacts.node_position[node],
@@ -328,12 +329,12 @@ namespace unilateral::masonry
               "block " + std::to_string(first_block) + where :
               "block " + std::to_string(first_block) + where + " and the " +
                 quantity(g.blocks.size() - 1, "block") + " joined to it";
-          index_of_root[groups.root(first_block)] = with_motions.size();
+          index_of_root[groups.find(first_block)] = with_motions.size();
           with_motions.push_back(std::move(g));
         }
       group_of_node.resize(n_nodes);
       for (std::size_t a = 0; a < n_nodes; ++a)
-        group_of_node[a] = index_of_root[groups.root(contacts.node_block[a])];
+        group_of_node[a] = index_of_root[groups.find(contacts.node_block[a])];
       return with_motions;
     }
 
@@ -796,14 +797,14 @@ namespace unilateral::masonry
       {
         // Blocks whose joint is not parallel to t slide together; a
         // support not parallel to t holds their set.
-        BlockGroups sets(n_blocks);
+        DisjointSets sets(n_blocks);
         for (std::size_t k = 0; k < contacts.constraints.size(); ++k)
           if (contacts.constraints[k].kind == ConstraintKind::joint &&
               std::abs(dot<dim>(contacts.constraints[k].normal, t)) > parallel)
-            sets.join(contacts.blocks[k][0], contacts.blocks[k][1]);
+            sets.unite(contacts.blocks[k][0], contacts.blocks[k][1]);
         std::vector<char> held(n_blocks, 0);
         const auto        hold = [&](const unsigned int node) {
-          held[sets.root(contacts.node_block[node])] = 1;
+          held[sets.find(contacts.node_block[node])] = 1;
         };
         for (const HeldNode<dim> &h : contacts.held)
           hold(h.node);
@@ -820,7 +821,7 @@ namespace unilateral::masonry
         slides.set_of_block.assign(n_blocks, FreeSlides<dim>::none);
         std::vector<unsigned int> set_of_root(n_blocks, FreeSlides<dim>::none);
         for (unsigned int b = 0; b < n_blocks; ++b)
-          if (const unsigned int root = sets.root(b); !held[root])
+          if (const std::size_t root = sets.find(b); !held[root])
             {
               if (set_of_root[root] == FreeSlides<dim>::none)
                 set_of_root[root] = slides.n_sets++;

@@ -1,3 +1,4 @@
+#include <unilateral/base/disjoint_sets.h>
 #include <unilateral/base/text.h>
 #include <unilateral/scenes/masonry/free_motions.h>
 #include <unilateral/scenes/masonry/mechanism.h>
@@ -268,17 +269,17 @@ namespace unilateral::masonry
         // free one noted before solving; set aside, so that a mechanism
         // elsewhere is still found (a loose block beside an arch hid the
         // arch's, a review).
-        BlockGroups sets(frames.n_blocks);
+        DisjointSets sets(frames.n_blocks);
         for (const Condition<dim> &c : conditions)
           if (c.n_parts == 2 && !held[c.block[0]] && !held[c.block[1]])
-            sets.join(c.block[0], c.block[1]);
+            sets.unite(c.block[0], c.block[1]);
         std::vector<char> anchored(frames.n_blocks, 0);
         for (const Condition<dim> &c : conditions)
           for (unsigned int p = 0; p < c.n_parts; ++p)
             if (!held[c.block[p]] && (c.n_parts == 1 || held[c.block[1 - p]]))
-              anchored[sets.root(c.block[p])] = 1;
+              anchored[sets.find(c.block[p])] = 1;
         for (unsigned int b = 0; b < frames.n_blocks; ++b)
-          held[b] = held[b] || !anchored[sets.root(b)];
+          held[b] = held[b] || !anchored[sets.find(b)];
       }
     // The others, column by column; a held block's motion is 0.
     constexpr unsigned int    nr = n_rigid_motions(dim);

@@ -1,3 +1,4 @@
+#include <unilateral/base/disjoint_sets.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/scenes/masonry/mesh_file.h>
 
@@ -16,7 +17,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <regex>
 #include <sstream>
 
@@ -1020,16 +1020,9 @@ namespace unilateral::masonry
             cell->active_cell_index());
       }
 
-    // Blocks: cells sharing a vertex, with the same entity and tag (sets
-    // of cells by their roots in a parent list).
-    const auto find = [](std::vector<unsigned int> &parent, unsigned int c) {
-      while (parent[c] != c)
-        c = parent[c] = parent[parent[c]];
-      return c;
-    };
-    std::vector<unsigned int> parent(n_cells);
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto same_body = [&](const unsigned int a, const unsigned int b) {
+    // Blocks: cells sharing a vertex, with the same entity and tag.
+    DisjointSets by_vertex(n_cells);
+    auto         same_body = [&](const unsigned int a, const unsigned int b) {
       const FileCell<dim> &x = scan.cells[file_cell[a]];
       const FileCell<dim> &y = scan.cells[file_cell[b]];
       return x.entity == y.entity && x.physical == y.physical;
@@ -1038,7 +1031,7 @@ namespace unilateral::masonry
       for (std::size_t i = 1; i < cells.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
           if (same_body(cells[i], cells[j]))
-            parent[find(parent, cells[i])] = find(parent, cells[j]);
+            by_vertex.unite(cells[i], cells[j]);
     std::vector<int> block_of_root(n_cells, -1);
     MeshFileBlocks   result;
     result.simplex = scan.simplex;
@@ -1046,7 +1039,7 @@ namespace unilateral::masonry
     for (const auto &cell : file_mesh.active_cell_iterators())
       {
         const unsigned int c    = cell->active_cell_index();
-        const unsigned int root = find(parent, c);
+        const std::size_t  root = by_vertex.find(c);
         if (block_of_root[root] < 0)
           {
             block_of_root[root] = static_cast<int>(result.tag_of_block.size());
@@ -1134,20 +1127,18 @@ namespace unilateral::masonry
     // faces. After the test of duplicated nodes, which part a block so too
     // and are named as such.
     {
-      std::vector<unsigned int> by_faces(n_cells);
-      std::iota(by_faces.begin(), by_faces.end(), 0u);
-      const auto root = [&](const unsigned int c) { return find(by_faces, c); };
+      DisjointSets by_faces(n_cells);
       for (const auto &cell : file_mesh.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (!cell->at_boundary(f) &&
               same_body(cell->active_cell_index(),
                         cell->neighbor(f)->active_cell_index()))
-            by_faces[root(cell->active_cell_index())] =
-              root(cell->neighbor(f)->active_cell_index());
+            by_faces.unite(cell->active_cell_index(),
+                           cell->neighbor(f)->active_cell_index());
       for (unsigned int v = 0; v < cells_at_vertex.size(); ++v)
         for (const unsigned int c : cells_at_vertex[v])
           for (const unsigned int d : cells_at_vertex[v])
-            if (block[c] == block[d] && root(c) != root(d))
+            if (block[c] == block[d] && by_faces.find(c) != by_faces.find(d))
               {
                 std::ostringstream message;
                 message << "cells of block " << block[c] << " (physical group '"

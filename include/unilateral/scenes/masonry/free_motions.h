@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -82,34 +81,6 @@ namespace unilateral::masonry
   template <int dim>
   unsigned int
   n_blocks_of(const ContactSet<dim> &contacts);
-
-  /// Groups of blocks linked by joints (union-find on the joints' blocks).
-  class BlockGroups
-  {
-  public:
-    explicit BlockGroups(const unsigned int n_blocks)
-      : parent(n_blocks)
-    {
-      std::iota(parent.begin(), parent.end(), 0u);
-    }
-
-    unsigned int
-    root(unsigned int b)
-    {
-      while (parent[b] != b)
-        b = parent[b] = parent[parent[b]];
-      return b;
-    }
-
-    void
-    join(const unsigned int a, const unsigned int b)
-    {
-      parent[root(a)] = root(b);
-    }
-
-  private:
-    std::vector<unsigned int> parent;
-  };
 
   /**
    * The rigid motions that no support resists, for each group of blocks
