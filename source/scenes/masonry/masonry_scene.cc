@@ -863,6 +863,46 @@ namespace unilateral::masonry
         .set("moment", list(moments[b]));
   }
 
+  namespace
+  {
+    /**
+     * Where a run failed and a material is nearly incompressible, that is
+     * the likely cause: its volumetric stiffness dwarfs its shear
+     * stiffness, displacement elements lock, and A's entries grow so far
+     * beyond the forces that double precision no longer resolves them
+     * (the stress check then speaks of rigid motions and units, which
+     * would not help). Measured on the stack bond: nu = 0.4999 converges,
+     * 0.49999 does not.
+     */
+    std::string
+    nearly_incompressible(const std::vector<MaterialClass> &classes)
+    {
+      std::ostringstream note;
+      note << std::setprecision(3);
+      for (std::size_t k = 0; k < classes.size(); ++k)
+        {
+          const double nu = classes[k].poissons_ratio;
+          // (lambda + 2 mu) / mu, the plane-strain wave-speed ratio squared.
+          const double contrast = 2 * (1 - nu) / (1 - 2 * nu);
+          if (contrast > 1e3)
+            {
+              note << "; the likely cause: 'Masonry/Materials/Poisson's "
+                      "ratio' = "
+                   << std::setprecision(12) << nu << std::setprecision(3)
+                   << " (class " << k
+                   << ") makes that material's volumetric stiffness "
+                   << contrast
+                   << " times its shear stiffness, more than displacement "
+                      "elements and double precision resolve (other units "
+                      "would not help): use a Poisson's ratio of at most "
+                      "0.499";
+              break;
+            }
+        }
+      return note.str();
+    }
+  } // namespace
+
   template <int dim>
   std::string
   MasonryScene<dim>::failure_description(const lcp::Report &report) const
@@ -927,11 +967,13 @@ namespace unilateral::masonry
     // An answer that is not resolved, where something can move freely: the
     // loads may drive it by less than the solver's proof of no solution
     // needs (a block on a frictionless slope of 1e-5 degrees, a review).
+    const std::string material =
+      nearly_incompressible(parameters.materials.classes);
     if (!free_motions.empty())
       return Scene::failure_description(report) + unused +
              ": if the loads do any work along such a motion, " + structure +
-             " has no equilibrium";
-    return Scene::failure_description(report);
+             " has no equilibrium" + material;
+    return Scene::failure_description(report) + material;
   }
 
   template <int dim>
