@@ -23,7 +23,8 @@
 // part would float with the rigid motions of the whole slice). A 3D wall free
 // to slide along z, unloaded that way: TFETI refuses it with a message that
 // says what to do. Gravity upwards (no equilibrium): infeasible, not an
-// iteration limit.
+// iteration limit; a tolerance out of reach (0) on a wall in equilibrium:
+// not infeasible.
 #include "tfeti_test_tools.h"
 
 #include <fstream>
@@ -210,6 +211,22 @@ main()
                 << to_string(result.report.status) << ": "
                 << result.report.message << "\n";
     }
+
+  // A tolerance out of reach (0): the penalty grows as for no equilibrium,
+  // but the violation goes on falling far below any force; the run was
+  // called 'infeasible' (a review), and ends at its iteration limit now.
+  {
+    const Run result =
+      run(parse(prm_text("stack bond", 4, "tfeti") +
+                "subsection Solver\n  set Maximum iterations = 5000\n"
+                "  subsection TFETI\n    set Tolerance = 0\n  end\nend\n"),
+          "tolerance_zero");
+    std::cout << "stack bond m = 4, 'TFETI/Tolerance = 0': status "
+              << to_string(result.report.status) << ", not called "
+              << "infeasible: "
+              << yes_no(result.report.status != lcp::Status::infeasible)
+              << "\n";
+  }
 
   // Without the projection step TFETI's answer is as accurate as its own
   // tolerance; where the final checks find it short, the message said only

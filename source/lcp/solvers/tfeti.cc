@@ -300,12 +300,20 @@ namespace unilateral::lcp
        * end (the iterate then runs off to 1e29 while its residuals look
        * fine). Declared once rho has grown twenty times over its start
        * and to 1e12 ||P F P||: a wall in equilibrium converged long
-       * before (8-17 outer iterations, benchmarks/tfeti/README.md).
+       * before (8-17 outer iterations, benchmarks/tfeti/README.md) —
+       * unless its 'Tolerance' is out of reach (0, or below what double
+       * precision resolves), where rho grows alike while the violation
+       * goes on falling far below any force (a review: 'Tolerance = 0'
+       * called a stack bond of m = 4 without equilibrium at a violation of
+       * 1e-24). So the violation must also have stalled at a size that
+       * matters, 1e-10 of the scale; below, the run ends at its iteration
+       * limit.
        */
       bool
-      no_equilibrium() const
+      no_equilibrium(const double violation) const
       {
-        return rho >= 1048576.0 * initial_rho && rho >= 1e12 * norm_pfp;
+        return rho >= 1048576.0 * initial_rho && rho >= 1e12 * norm_pfp &&
+               norm_pfp * violation > 1e-10 * problem.scale;
       }
       /// The equality multiplier, as G^T mu.
       Vector q;
@@ -396,7 +404,7 @@ namespace unilateral::lcp
           if (violation > 0.5 * previous_violation)
             rho *= options.penalty_growth;
           previous_violation = violation;
-          if (no_equilibrium())
+          if (no_equilibrium(violation))
             return Outcome::infeasible;
         }
       return Outcome::outer_limit;
