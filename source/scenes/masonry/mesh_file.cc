@@ -7,6 +7,7 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
 #include <algorithm>
@@ -46,6 +47,18 @@ namespace unilateral::masonry
       /// The largest coordinate of a cell's node.
       double farthest = 0;
       bool   simplex  = false;
+      /// The file's format, 2.2 or 4.1.
+      double version = 0;
+      /**
+       * A whole-numbered point near the mesh's centre where the mesh lies
+       * far from the origin, else zero. deal.II checks each new cell's
+       * volume by a formula in its vertices' coordinates (cubic in 3D),
+       * which cancels far from the origin (a box of edge 0.5 at (1e5, 1e5,
+       * 1e5) read as inverted, a turned one as tangled, where double
+       * precision keeps its geometry to 4e-11): its meshes are therefore
+       * built with this point subtracted from every node and moved back.
+       */
+      dealii::Tensor<1, dim> local_origin;
 
       /// How far double precision keeps the cells' geometry far from the
       /// origin, relative to their size: epsilon |x| / h.
@@ -430,6 +443,7 @@ namespace unilateral::masonry
         }
       if (version == 0)
         fail(file, "no $MeshFormat section: not a Gmsh mesh");
+      scan.version = version;
       if (elements.empty())
         fail(file,
              "no cells of dimension " + std::to_string(dim) +
@@ -437,6 +451,12 @@ namespace unilateral::masonry
                "in 3D): check 'Masonry/Dimension' and the file");
       scan.simplex = elements.front().type == 2 || elements.front().type == 4;
       scan.smallest_edge = std::numeric_limits<double>::max();
+      dealii::Tensor<1, dim> lowest, highest;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lowest[d]  = std::numeric_limits<double>::max();
+          highest[d] = std::numeric_limits<double>::lowest();
+        }
       for (const Element &element : elements)
         {
           if ((element.type == 2 || element.type == 4) != scan.simplex)
@@ -464,6 +484,8 @@ namespace unilateral::masonry
                                       static_cast<double>(element.nodes.size());
                   scan.farthest =
                     std::max(scan.farthest, std::abs(found->second[d]));
+                  lowest[d]  = std::min(lowest[d], found->second[d]);
+                  highest[d] = std::max(highest[d], found->second[d]);
                 }
             }
           for (std::size_t a = 1; a < element.nodes.size(); ++a)
@@ -492,7 +514,55 @@ namespace unilateral::masonry
             }
           scan.cells.push_back(cell);
         }
+      if (scan.farthest > 1e4 * scan.smallest_edge)
+        for (unsigned int d = 0; d < dim; ++d)
+          scan.local_origin[d] = std::nearbyint(0.5 * (lowest[d] + highest[d]));
       return scan;
+    }
+
+    /**
+     * The text of gmsh file @p file with @p shift added to its nodes'
+     * first dim coordinates (for GridIn, see GmshScan::local_origin).
+     * A coordinate line is told by its number of words, as gmsh writes the
+     * files: "tag x y z" in format 2.2, "x y z" in 4.1 (whose other lines
+     * there have one or four). A file laid out otherwise is found out
+     * after reading, where its cells are looked up by their centroids.
+     */
+    template <int dim>
+    std::string
+    with_nodes_moved(const std::string            &file,
+                     const double                  version,
+                     const dealii::Tensor<1, dim> &shift)
+    {
+      std::ifstream      in(file);
+      std::ostringstream out;
+      out << std::setprecision(17);
+      const std::size_t words_before = version == 2.2 ? 1 : 0;
+      bool              in_nodes     = false;
+      std::string       line;
+      while (std::getline(in, line))
+        {
+          std::istringstream       tokens(line);
+          std::vector<std::string> words;
+          for (std::string word; tokens >> word;)
+            words.push_back(word);
+          if (words.size() == 1 &&
+              (words[0] == "$Nodes" || words[0] == "$EndNodes"))
+            in_nodes = words[0] == "$Nodes";
+          else if (in_nodes && words.size() == words_before + 3)
+            {
+              for (std::size_t w = 0; w < words_before; ++w)
+                out << words[w] << ' ';
+              for (unsigned int d = 0; d < 3; ++d)
+                out << (d < dim ?
+                          std::stod(words[words_before + d]) + shift[d] :
+                          std::stod(words[words_before + d]))
+                    << (d < 2 ? ' ' : '\n');
+              continue;
+            }
+          out << line << '\n';
+        }
+      return out.str();
     }
 
     /// Rounded coordinates, for finding points again.
@@ -918,8 +988,19 @@ namespace unilateral::masonry
       {
         dealii::GridIn<dim, dim> grid_in;
         grid_in.attach_triangulation(file_mesh);
-        std::ifstream in(file_name);
-        grid_in.read_msh(in);
+        if (scan.local_origin.norm() > 0)
+          {
+            std::istringstream in(with_nodes_moved<dim>(file_name,
+                                                        scan.version,
+                                                        -scan.local_origin));
+            grid_in.read_msh(in);
+            dealii::GridTools::shift(scan.local_origin, file_mesh);
+          }
+        else
+          {
+            std::ifstream in(file_name);
+            grid_in.read_msh(in);
+          }
       }
     catch (const InputError &)
       {
@@ -957,9 +1038,10 @@ namespace unilateral::masonry
         // mailing list.
         if (reason.find("which is used in many places") != std::string::npos)
           reason = "an internal check of deal.II failed";
-        // Far from the origin GridIn's own checks of the cells fail with
-        // an internal error (a 3D box of edge 0.5 at 1e5; at 3e4 it reads
-        // it): say so where that may be why.
+        // Far from the origin GridIn's own checks of the cells failed with
+        // an internal error (a 3D box of edge 0.5 at 1e5, before it was
+        // read around GmshScan::local_origin): say so where that may be
+        // why.
         const std::string far =
           scan.smallest_edge > 0 && scan.geometry_precision() > 1e-12 ?
             " (" + scan.distance_text() +
@@ -1157,9 +1239,13 @@ namespace unilateral::masonry
     triangulation.clear();
     try
       {
-        triangulation.create_triangulation(vertices,
+        std::vector<dealii::Point<dim>> near_origin = vertices;
+        for (dealii::Point<dim> &vertex : near_origin)
+          vertex -= scan.local_origin;
+        triangulation.create_triangulation(near_origin,
                                            cells,
                                            dealii::SubCellData());
+        dealii::GridTools::shift(scan.local_origin, triangulation);
       }
     catch (const std::exception &exception)
       {
