@@ -1298,15 +1298,18 @@ namespace unilateral::masonry
                                direction_tolerance);
       // A Signorini support named on a face that is a joint (the blocks'
       // faces coincide, with nodes of their own: a mesh file's boundary
-      // group that also covers a joint) would set the block on a rigid
-      // support where the other block is. (Rollers and held nodes on
-      // joints are two-sided and meant: the symmetry plane of an extruded
-      // wall.)
+      // group that also covers a joint, or the built-in 3D walls' collar)
+      // would set the block on a rigid support where the other block is;
+      // a traction there would load the faces of both blocks, twice the
+      // load and inside the structure (a review: 'Traction boundaries =
+      // collar'). (Rollers and held nodes on joints are two-sided and
+      // meant: the symmetry plane of an extruded wall.)
       for (std::size_t f = 0; f < faces.size(); ++f)
         if (partner_block[f] >= 0)
           for (const Support<dim> *support :
                supports.on_boundary(faces[f].boundary))
-            if (support->kind == Kind::signorini)
+            if (support->kind == Kind::signorini ||
+                (support->kind == Kind::traction && !supports.zero_traction))
               for (const unsigned int node : faces[f].nodes)
                 if (supports.acts_at(*support,
                                      dealii::Point<dim>(as_tensor<dim>(
@@ -1317,12 +1320,17 @@ namespace unilateral::masonry
                     std::to_string(faces[f].block) +
                     " that is a joint with block " +
                     std::to_string(partner_block[f]) + " (at " +
-                    result.describe_node(node) +
-                    "): it would set the block on a rigid support where "
-                    "the other block is; a Signorini support belongs on the "
-                    "structure's outer faces: name another boundary, or "
-                    "take the joint's faces out of the group '" +
-                    support->name + "' in the mesh file");
+                    result.describe_node(node) + "): " +
+                    (support->kind == Kind::signorini ?
+                       "it would set the block on a rigid support where "
+                       "the other block is; a Signorini support" :
+                       "a traction there would act inside the structure, "
+                       "on a face another block lies on (on both of them "
+                       "where the group covers both); a traction") +
+                    " belongs on the structure's outer faces: name another "
+                    "boundary, or (in a mesh file) take the joint's faces "
+                    "out of the group '" +
+                    support->name + "'");
     }
 
     // One joint constraint per node pair and group of normals (a pair on
