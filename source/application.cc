@@ -104,7 +104,8 @@ namespace unilateral
       prm.declare_entry("Scene",
                         default_scene(),
                         dealii::Patterns::Selection(SceneRegistry::selection()),
-                        "Which problem to build and solve.");
+                        "Which problem to build and solve:\n" +
+                          SceneRegistry::documentation());
       prm.declare_entry(
         "Memory limit",
         "0",
@@ -518,6 +519,31 @@ namespace unilateral
         }
     }
 
+    /**
+     * A setting in a subsection that only another scene reads (a plate's
+     * 'Plate/Elements x' in a masonry file) would be ignored without a word
+     * (a review): refused, as the scenes refuse settings that their own
+     * options leave unread. Told by a value other than the default.
+     */
+    void
+    refuse_other_scenes_settings(const dealii::ParameterHandler &prm,
+                                 const std::string              &scene)
+    {
+      for (const SceneInfo &other : SceneRegistry::all())
+        if (other.name != scene)
+          for (const std::string &section :
+               sections_declared_by(other.declare_parameters))
+            {
+              const auto [entry, value] = first_changed_entry(prm, section);
+              if (!entry.empty())
+                throw InputError("parameter '" + entry + "' = " + value +
+                                 ": is read only by the " + other.name +
+                                 " scene (now 'Scene = " + scene +
+                                 "'): set 'Scene = " + other.name +
+                                 "', or remove the line");
+            }
+    }
+
     int
     run(const std::string                                   &parameter_file,
         std::ostream                                        &out,
@@ -597,6 +623,7 @@ namespace unilateral
       std::unique_ptr<Scene> scene;
       try
         {
+          refuse_other_scenes_settings(prm, scene_info.name);
           context.solver.parse_parameters(prm);
           scene = scene_info.create(prm);
         }
@@ -672,7 +699,11 @@ namespace unilateral
         }
       catch (const OutOfMemory &error)
         {
-          failure = std::string(error.what()) + "; " +
+          failure = std::string(error.what()) +
+                    (memory::address_space_limit_binds() ?
+                       " (" + memory::address_space_in_use() + ")" :
+                       "") +
+                    "; " +
                     memory_fix(*scene, memory_limit, resident_before_scene);
         }
       catch (const std::bad_alloc &)

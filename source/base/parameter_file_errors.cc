@@ -650,4 +650,61 @@ namespace unilateral
     const auto value = in_file.values.find(path + "/" + name);
     return value == in_file.values.end() ? otherwise : value->second;
   }
+
+  namespace
+  {
+    /// @p prm's parameters as its JSON listing has them, each with its
+    /// 'value' and 'default_value' (names not mangled).
+    Tree
+    listing_of(const dealii::ParameterHandler &prm)
+    {
+      std::stringstream listing;
+      prm.print_parameters(listing, dealii::ParameterHandler::JSON);
+      Tree tree;
+      boost::property_tree::read_json(listing, tree);
+      return tree;
+    }
+
+    std::pair<std::string, std::string>
+    first_changed_below(const Tree &node, const std::string &path)
+    {
+      for (const auto &[name, child] : node)
+        {
+          const std::string full = path + "/" + name;
+          if (const auto value = child.get_optional<std::string>("value"))
+            {
+              if (*value != child.get<std::string>("default_value", *value))
+                return {full, *value};
+            }
+          else if (auto found = first_changed_below(child, full);
+                   !found.first.empty())
+            return found;
+        }
+      return {};
+    }
+  } // namespace
+
+  std::pair<std::string, std::string>
+  first_changed_entry(const dealii::ParameterHandler &prm,
+                      const std::string              &section)
+  {
+    const Tree listing = listing_of(prm);
+    const auto found   = listing.find(section);
+    if (found == listing.not_found())
+      return {};
+    return first_changed_below(found->second, section);
+  }
+
+  std::vector<std::string>
+  sections_declared_by(
+    const std::function<void(dealii::ParameterHandler &)> &declare)
+  {
+    dealii::ParameterHandler prm;
+    declare(prm);
+    std::vector<std::string> sections;
+    for (const auto &[name, child] : listing_of(prm))
+      if (!child.get_optional<std::string>("value"))
+        sections.push_back(name);
+    return sections;
+  }
 } // namespace unilateral

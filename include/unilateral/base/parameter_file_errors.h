@@ -3,7 +3,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace unilateral
 {
@@ -67,4 +70,19 @@ namespace unilateral
                 const std::string &path,
                 const std::string &name,
                 const std::string &otherwise);
+
+  /**
+   * A parameter of subsection @p section (at the top level) of @p prm
+   * whose value differs from its default, as "Section/.../Name" and the
+   * value; two empty strings if there is none. For settings that the run
+   * would not read: those of another scene's subsection.
+   */
+  std::pair<std::string, std::string>
+  first_changed_entry(const dealii::ParameterHandler &prm,
+                      const std::string              &section);
+
+  /// The subsections that @p declare declares at the top level.
+  std::vector<std::string>
+  sections_declared_by(
+    const std::function<void(dealii::ParameterHandler &)> &declare);
 } // namespace unilateral

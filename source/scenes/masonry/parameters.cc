@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <tuple>
 
 namespace unilateral::masonry
 {
@@ -27,6 +29,29 @@ namespace unilateral::masonry
     const std::string boundary_section  = "Masonry/Boundary conditions";
     const std::string materials_section = "Masonry/Materials";
     const std::string tearing_section   = "Masonry/Tearing";
+
+    // Defaults that the checks of settings the run would not read compare
+    // with (a value other than the default was set on purpose).
+    const std::string default_blocks_per_side = "20";
+    const std::string default_blocks_through  = "1";
+    const std::string default_thickness       = "1";
+    const std::string default_gap             = "g";
+
+    /// Whether every ';'-separated component of @p vector is the number 0
+    /// ('0; 0', '0', '0.0; 0'); an expression counts as not zero.
+    bool
+    all_zero(const std::string &vector)
+    {
+      for (const std::string &component :
+           dealii::Utilities::split_string_list(vector, ';'))
+        {
+          char        *end   = nullptr;
+          const double value = std::strtod(component.c_str(), &end);
+          if (component.empty() || *end != '\0' || value != 0)
+            return false;
+        }
+      return true;
+    }
 
     std::vector<double>
     get_doubles(dealii::ParameterHandler &prm,
@@ -115,7 +140,8 @@ namespace unilateral::masonry
                       "brick at x = 0, each next row shifted by H, half bricks "
                       "at the ends) or 'laminae' (1 x H strips); their "
                       "boundaries are named left, right, base, top (and front "
-                      "z = 0, back z = thickness in 3D). Or 'mesh file': the "
+                      "z = 0, back z = thickness, collar between the blocks "
+                      "through the thickness in 3D). Or 'mesh file': the "
                       "blocks of 'Mesh file'.");
     prm.declare_entry("Mesh file",
                       "",
@@ -133,7 +159,7 @@ namespace unilateral::masonry
                       "(3D) name the boundaries the supports and loads refer "
                       "to.");
     prm.declare_entry("Blocks per side",
-                      "20",
+                      default_blocks_per_side,
                       Integer(),
                       "1 <= m <= 100000: the block height of the built-in "
                       "walls is "
@@ -158,13 +184,13 @@ namespace unilateral::masonry
                       "the paper's element). A mesh file's cells decide: P2 "
                       "for a simplex mesh.");
     prm.declare_entry("Blocks through the thickness",
-                      "1",
+                      default_blocks_through,
                       Integer(),
                       "3D built-in walls: each block of the 2D wall becomes "
                       "this many blocks behind each other in z (collar "
                       "joints between them); 1 to 1000.");
     prm.declare_entry("Thickness",
-                      "1",
+                      default_thickness,
                       Double(),
                       "3D built-in walls: the thickness in z, in units of H "
                       "(> 0); each block gets round(depth / h) cells in z, and "
@@ -264,6 +290,29 @@ namespace unilateral::masonry
                       " gives leaves less than 1e-6 of a cell's width "
                       "(h = H / 2^r) deep; make it larger or the blocks "
                       "through the thickness fewer");
+    // Settings the run would not read are refused rather than ignored, as
+    // 'Mesh file' above (a review: 'Blocks per side' beside a mesh file,
+    // 'Thickness' in 2D, both exit 0 without a word).
+    for (const auto &[name, default_value, built_in_only] :
+         {std::tuple{"Blocks per side", default_blocks_per_side, true},
+          std::tuple{"Blocks through the thickness",
+                     default_blocks_through,
+                     false},
+          std::tuple{"Thickness", default_thickness, false}})
+      {
+        const std::string value = prm.get(name);
+        check_parameter(value == default_value ||
+                          (!from_mesh_file &&
+                           (built_in_only || dimension == 3)),
+                        geometry_section,
+                        name,
+                        value,
+                        from_mesh_file ?
+                          "is read only for the built-in walls (now "
+                          "'Geometry = mesh file'): remove the line" :
+                          "is read only for 3D walls (now 'Dimension = 2'): "
+                          "set 'Dimension = 3', or remove the line");
+      }
     coincidence_tolerance = prm.get_double("Coincidence tolerance");
     check_parameter(coincidence_tolerance > 0 && coincidence_tolerance <= 1e-3,
                     geometry_section,
@@ -328,7 +377,7 @@ namespace unilateral::masonry
                       "settled stretch of the base (Gamma_S)." +
                         where);
     prm.declare_entry("Signorini gap",
-                      "g",
+                      default_gap,
                       dealii::Patterns::Anything(),
                       "The gap between a Signorini boundary and its support, "
                       "along the normal: a function of x, y, z (a settlement "
@@ -420,7 +469,31 @@ namespace unilateral::masonry
     traction                = parse_selections(prm.get("Traction boundaries"),
                                 boundary_section + "/Traction boundaries");
     traction_value          = prm.get("Traction");
-    gravity                 = prm.get_double("Gravity");
+    // Values that no boundary would take are refused rather than dropped
+    // (a review: a traction of '0; -5' with no 'Traction boundaries' left
+    // the wall unloaded, exit 0).
+    check_parameter(!traction.empty() || all_zero(traction_value),
+                    boundary_section,
+                    "Traction",
+                    traction_value,
+                    "loads no boundary ('Traction boundaries' is empty): "
+                    "name the boundaries it loads, or set it to 0");
+    check_parameter(!prescribed.empty() || all_zero(prescribed_displacement),
+                    boundary_section,
+                    "Prescribed displacement",
+                    prescribed_displacement,
+                    "moves no boundary ('Prescribed displacement "
+                    "boundaries' is empty): name the boundaries it moves, "
+                    "or set it to 0");
+    check_parameter(!signorini.empty() ||
+                      dealii::Utilities::trim(gap) == default_gap,
+                    boundary_section,
+                    "Signorini gap",
+                    gap,
+                    "is read only where 'Signorini' names a boundary (now "
+                    "empty): name the boundaries it applies to, or remove "
+                    "the line");
+    gravity = prm.get_double("Gravity");
     check_parameter(std::isfinite(gravity),
                     boundary_section,
                     "Gravity",
