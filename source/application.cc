@@ -267,8 +267,12 @@ namespace unilateral
         {
           const std::filesystem::path &file = entry.path();
           std::error_code              error;
+          // A file of ours a killed run left half written (output_file.h).
+          std::string name = file.filename().string();
+          if (name.size() > 8 && name.substr(name.size() - 8) == ".partial")
+            name.resize(name.size() - 8);
           if (!entry.is_regular_file() ||
-              (names.count(file.filename().string()) == 0 &&
+              (names.count(name) == 0 &&
                !std::regex_match(file.filename().string(), ours)) ||
               std::filesystem::equivalent(file, parameter_file, error))
             continue;

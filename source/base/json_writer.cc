@@ -203,12 +203,9 @@ namespace unilateral
   void
   JsonObject::write_file(const std::string &file_name) const
   {
-    std::ofstream out(file_name);
-    if (!out)
-      throw InputError("cannot write '" + file_name +
-                       "': check that the output directory is writable");
+    std::ofstream out = open_for_writing(file_name);
     write(out);
     out << "\n";
-    close_written_file(out, file_name);
+    finish_writing(out, file_name);
   }
 } // namespace unilateral

@@ -39,37 +39,6 @@ namespace unilateral::lcp
       return in;
     }
 
-    // Files are written under a temporary name and renamed when complete
-    // (finish_writing): a run ended half-way (another MPI rank's failure,
-    // a kill) leaves no truncated file that reads like a whole one.
-    std::string
-    partial_name(const std::string &file_name)
-    {
-      return file_name + ".partial";
-    }
-
-    std::ofstream
-    open_for_writing(const std::string &file_name)
-    {
-      std::ofstream out(partial_name(file_name));
-      if (!out)
-        throw InputError("cannot write '" + file_name +
-                         "': check that the directory exists and is writable");
-      out << std::setprecision(17);
-      return out;
-    }
-
-    void
-    finish_writing(std::ofstream &out, const std::string &file_name)
-    {
-      close_written_file(out, file_name);
-      std::error_code error;
-      std::filesystem::rename(partial_name(file_name), file_name, error);
-      if (error)
-        throw InputError("cannot write '" + file_name +
-                         "': " + error.message());
-    }
-
     [[noreturn]] void
     fail(const std::string &file_name,
          const unsigned int line,
@@ -298,6 +267,7 @@ namespace unilateral::lcp
   write_matrix_market(const SparseMatrix &A, const std::string &file_name)
   {
     std::ofstream out = open_for_writing(file_name);
+    out << std::setprecision(17);
     // Symmetric storage: the lower triangle only.
     long long lower = 0;
     for (Index j = 0; j < A.outerSize(); ++j)
@@ -375,6 +345,7 @@ namespace unilateral::lcp
   write_vector(const Vector &v, const std::string &file_name)
   {
     std::ofstream out = open_for_writing(file_name);
+    out << std::setprecision(17);
     for (Index i = 0; i < v.size(); ++i)
       out << v[i] << "\n";
     finish_writing(out, file_name);
@@ -440,6 +411,7 @@ namespace unilateral::lcp
   write_constraints(const Problem &problem, const std::string &file_name)
   {
     std::ofstream out = open_for_writing(file_name);
+    out << std::setprecision(17);
     out << "# index (1-based) lower_bound\n";
     for (Index k = 0; k < problem.n_constrained(); ++k)
       out << problem.constrained[k] + 1 << " " << problem.lower_bound[k]

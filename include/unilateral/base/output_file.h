@@ -13,4 +13,21 @@ namespace unilateral
    */
   void
   close_written_file(std::ofstream &file, const std::string &name);
+
+  /**
+   * @name Files written whole or not at all
+   * A result file is written under a temporary name (@p name + ".partial")
+   * and renamed when complete: a run ended half-way (another MPI rank's
+   * failure, a kill) leaves no truncated file that reads like a whole one,
+   * nor an earlier run's file half overwritten.
+   */
+  /// @{
+  /// The stream to write @p name through; InputError if it cannot be made.
+  std::ofstream
+  open_for_writing(const std::string &name);
+
+  /// Closes @p file (as close_written_file) and gives it its name @p name.
+  void
+  finish_writing(std::ofstream &file, const std::string &name);
+  /// @}
 } // namespace unilateral
