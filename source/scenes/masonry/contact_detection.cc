@@ -113,7 +113,11 @@ namespace unilateral::masonry
                  "every node of a face along one normal, so it needs flat "
                  "faces there; mesh that surface with planar "
                  "quadrilaterals (warped faces are accepted only where "
-                 "nothing touches them)";
+                 "nothing touches them), or, where it is flat but its "
+                 "coordinates were written with too few digits, write more "
+                 "of them or raise 'Masonry/Coincidence tolerance' past the "
+                 "largest such warp over the smallest cell's edge (other "
+                 "faces may be warped more than this one)";
       throw InputError(message.str());
     }
 
