@@ -318,16 +318,24 @@ namespace unilateral
         }
     }
 
+    /// @p prm's parameters as its JSON listing has them, each with its
+    /// 'value' and 'default_value' (names not mangled).
+    Tree
+    listing_of(const dealii::ParameterHandler &prm)
+    {
+      std::stringstream listing;
+      prm.print_parameters(listing, dealii::ParameterHandler::JSON);
+      Tree tree;
+      boost::property_tree::read_json(listing, tree);
+      return tree;
+    }
+
     /// What @p prm declares, from its JSON listing.
     Declared
     declared_parameters(const dealii::ParameterHandler &prm)
     {
-      std::stringstream listing;
-      prm.print_parameters(listing, dealii::ParameterHandler::JSON);
-      Tree listed;
-      boost::property_tree::read_json(listing, listed);
       Declared declared;
-      collect(listed, "", declared);
+      collect(listing_of(prm), "", declared);
       return declared;
     }
 
@@ -653,18 +661,6 @@ namespace unilateral
 
   namespace
   {
-    /// @p prm's parameters as its JSON listing has them, each with its
-    /// 'value' and 'default_value' (names not mangled).
-    Tree
-    listing_of(const dealii::ParameterHandler &prm)
-    {
-      std::stringstream listing;
-      prm.print_parameters(listing, dealii::ParameterHandler::JSON);
-      Tree tree;
-      boost::property_tree::read_json(listing, tree);
-      return tree;
-    }
-
     std::pair<std::string, std::string>
     first_changed_below(const Tree &node, const std::string &path)
     {

@@ -434,22 +434,20 @@ main()
   // of the upper of two stacked squares (nodes of their own): a Signorini
   // support there set the upper square on a rigid support inside the lower
   // one (exit 0).
+  const std::string stacked_squares =
+    header + "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
+             "$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 1 0\n"
+             "6 1 1 0\n7 1 2 0\n8 0 2 0\n$EndNodes\n$Elements\n4\n"
+             "1 3 2 1 1 1 2 3 4\n2 3 2 1 2 5 6 7 8\n3 1 2 7 11 1 2\n"
+             "4 1 2 7 12 5 6\n$EndElements\n";
   bad("a Signorini support on a joint",
-      header + "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
-               "$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 1 0\n"
-               "6 1 1 0\n7 1 2 0\n8 0 2 0\n$EndNodes\n$Elements\n4\n"
-               "1 3 2 1 1 1 2 3 4\n2 3 2 1 2 5 6 7 8\n3 1 2 7 11 1 2\n"
-               "4 1 2 7 12 5 6\n$EndElements\n",
+      stacked_squares,
       "  subsection Boundary conditions\n    set Fixed = base where y < 0.5\n"
       "    set Signorini = base where y > 0.5\n  end\n");
   // So a traction there (a review: 'Traction boundaries = collar' on a 3D
   // wall loaded both faces of every collar joint, twice the load, exit 0).
   bad("a traction on a joint",
-      header + "$PhysicalNames\n1\n1 7 \"base\"\n$EndPhysicalNames\n"
-               "$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0 1 0\n"
-               "6 1 1 0\n7 1 2 0\n8 0 2 0\n$EndNodes\n$Elements\n4\n"
-               "1 3 2 1 1 1 2 3 4\n2 3 2 1 2 5 6 7 8\n3 1 2 7 11 1 2\n"
-               "4 1 2 7 12 5 6\n$EndElements\n",
+      stacked_squares,
       "  subsection Boundary conditions\n    set Fixed = base where y < 0.5\n"
       "    set Traction boundaries = base where y > 0.5\n"
       "    set Traction = 0; -1\n  end\n");

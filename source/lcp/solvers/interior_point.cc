@@ -492,6 +492,12 @@ namespace unilateral::lcp
             std::ostream  *progress) override
       {
         InteriorPointIterate ip(problem, options, report);
+        // Its start orders the Newton matrix and factorises it, seconds on
+        // large problems before the first iteration's line.
+        if (progress != nullptr)
+          *progress << "    interior point: ordering and factorising the "
+                       "Newton matrix for its start ("
+                    << problem.size() << " unknowns)" << std::endl;
         ip.start();
         const unsigned int limit = iteration_limit(500);
         for (unsigned int k = 0;; ++k)
