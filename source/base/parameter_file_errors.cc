@@ -2,12 +2,15 @@
 #include <unilateral/base/parameter_file_errors.h>
 #include <unilateral/base/text.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
 #include <algorithm>
 #include <climits>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -661,6 +664,32 @@ namespace unilateral
 
   namespace
   {
+    /// Whether @p value is @p default_value: item by item (lists split at
+    /// ',' and ';'), the same words or the same number ('100.0' and ' 100',
+    /// as JSON and XML files keep spaces; '0,-1,0' and '0, -1, 0').
+    bool
+    is_default(const std::string &value, const std::string &default_value)
+    {
+      const auto items = [](const std::string &text) {
+        return dealii::Utilities::split_string_list(
+          std::regex_replace(text, std::regex(";"), ","), ',');
+      };
+      const std::vector<std::string> a = items(value), b = items(default_value);
+      if (a.size() != b.size())
+        return false;
+      for (std::size_t i = 0; i < a.size(); ++i)
+        {
+          char        *end_a = nullptr, *end_b = nullptr;
+          const double x           = std::strtod(a[i].c_str(), &end_a);
+          const double y           = std::strtod(b[i].c_str(), &end_b);
+          const bool   same_number = !a[i].empty() && !b[i].empty() &&
+                                   *end_a == '\0' && *end_b == '\0' && x == y;
+          if (a[i] != b[i] && !same_number)
+            return false;
+        }
+      return true;
+    }
+
     std::pair<std::string, std::string>
     first_changed_below(const Tree &node, const std::string &path)
     {
@@ -669,7 +698,8 @@ namespace unilateral
           const std::string full = path + "/" + name;
           if (const auto value = child.get_optional<std::string>("value"))
             {
-              if (*value != child.get<std::string>("default_value", *value))
+              if (!is_default(*value,
+                              child.get<std::string>("default_value", *value)))
                 return {full, *value};
             }
           else if (auto found = first_changed_below(child, full);

@@ -1287,8 +1287,17 @@ namespace unilateral::masonry
       std::vector<char> joined(faces.size(), 0);
       // The block across each joined face.
       std::vector<long> partner_block(faces.size(), -1);
+      // Each face's nodes in a joint on it (a face may be one in part: a
+      // block resting on the middle of another's top).
+      std::vector<std::vector<unsigned int>> joint_nodes(faces.size());
       for (const auto &[pair, record] : joint_pairs)
         {
+          for (const std::size_t f : {record.face_first, record.face_second})
+            for (const unsigned int node : {pair.first, pair.second})
+              if (std::find(faces[f].nodes.begin(),
+                            faces[f].nodes.end(),
+                            node) != faces[f].nodes.end())
+                joint_nodes[f].push_back(node);
           joined[record.face_first] = joined[record.face_second] = 1;
           partner_block[record.face_first]  = faces[record.face_second].block;
           partner_block[record.face_second] = faces[record.face_first].block;
@@ -1306,35 +1315,56 @@ namespace unilateral::masonry
       // would set the block on a rigid support where the other block is;
       // a traction there would load the faces of both blocks, twice the
       // load and inside the structure (a review: 'Traction boundaries =
-      // collar'). (Rollers and held nodes on joints are two-sided and
-      // meant: the symmetry plane of an extruded wall.)
+      // collar'). Judged inside the joint, off its edges: a region that
+      // keeps a support to the free part of a face partly a joint (a block
+      // resting on the middle of another's top), ending where the joint
+      // begins, is meant (a review). (Rollers and held nodes on
+      // joints are two-sided and meant: the symmetry plane of an extruded
+      // wall.)
       for (std::size_t f = 0; f < faces.size(); ++f)
-        if (partner_block[f] >= 0)
-          for (const Support<dim> *support :
-               supports.on_boundary(faces[f].boundary))
-            if (support->kind == Kind::signorini ||
-                (support->kind == Kind::traction && !supports.zero_traction))
-              for (const unsigned int node : faces[f].nodes)
-                if (supports.acts_at(*support,
-                                     dealii::Point<dim>(as_tensor<dim>(
-                                       result.node_position[node])),
-                                     faces[f].vertices))
-                  throw InputError(
-                    support->description + " acts on a face of block " +
-                    std::to_string(faces[f].block) +
-                    " that is a joint with block " +
-                    std::to_string(partner_block[f]) + " (at " +
-                    result.describe_node(node) + "): " +
-                    (support->kind == Kind::signorini ?
-                       "it would set the block on a rigid support where "
-                       "the other block is; a Signorini support" :
-                       "a traction there would act inside the structure, "
-                       "on a face another block lies on (on both of them "
-                       "where the group covers both); a traction") +
-                    " belongs on the structure's outer faces: name another "
-                    "boundary, or (in a mesh file) take the joint's faces "
-                    "out of the group '" +
-                    support->name + "'");
+        if (!joint_nodes[f].empty())
+          {
+            dealii::Point<dim> middle;
+            for (const unsigned int node : joint_nodes[f])
+              middle += as_tensor<dim>(result.node_position[node]) /
+                        static_cast<double>(joint_nodes[f].size());
+            // The joint's middle, and points half way from it to each of
+            // its nodes: inside the joint, off its edges.
+            std::vector<dealii::Point<dim>> inside = {middle};
+            for (const unsigned int node : joint_nodes[f])
+              inside.push_back(
+                middle + 0.5 * (as_tensor<dim>(result.node_position[node]) -
+                                dealii::Tensor<1, dim>(middle)));
+            for (const Support<dim> *support :
+                 supports.on_boundary(faces[f].boundary))
+              if ((support->kind == Kind::signorini ||
+                   (support->kind == Kind::traction &&
+                    !supports.zero_traction)) &&
+                  std::any_of(inside.begin(),
+                              inside.end(),
+                              [&](const dealii::Point<dim> &point) {
+                                return supports.acts_at(*support,
+                                                        point,
+                                                        faces[f].vertices);
+                              }))
+                throw InputError(
+                  support->description + " acts on a face of block " +
+                  std::to_string(faces[f].block) +
+                  " that is a joint with block " +
+                  std::to_string(partner_block[f]) + " (the joint's middle " +
+                  describe_point<dim>(as_array<dim>(middle), faces[f].block) +
+                  "): " +
+                  (support->kind == Kind::signorini ?
+                     "it would set the block on a rigid support where "
+                     "the other block is; a Signorini support" :
+                     "a traction there would act inside the structure, "
+                     "on a face another block lies on (on both of them "
+                     "where the group covers both); a traction") +
+                  " belongs on the structure's outer faces: name another "
+                  "boundary, or (in a mesh file) take the joint's faces "
+                  "out of the group '" +
+                  support->name + "'");
+          }
     }
 
     // One joint constraint per node pair and group of normals (a pair on

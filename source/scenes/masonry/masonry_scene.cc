@@ -872,7 +872,8 @@ namespace unilateral::masonry
      * beyond the forces that double precision no longer resolves them
      * (the stress check then speaks of rigid motions and units, which
      * would not help). Measured on the stack bond: nu = 0.4999 converges,
-     * 0.49999 does not.
+     * 0.49999 does not; the note names a ratio above 0.4995 (a contrast
+     * of 1e3).
      */
     std::string
     nearly_incompressible(const std::vector<MaterialClass> &classes)
@@ -894,8 +895,8 @@ namespace unilateral::masonry
                    << contrast
                    << " times its shear stiffness, more than displacement "
                       "elements and double precision resolve (other units "
-                      "would not help): use a Poisson's ratio of at most "
-                      "0.499";
+                      "would not help): use a Poisson's ratio below "
+                      "0.4995";
               break;
             }
         }
@@ -967,8 +968,12 @@ namespace unilateral::masonry
     // An answer that is not resolved, where something can move freely: the
     // loads may drive it by less than the solver's proof of no solution
     // needs (a block on a frictionless slope of 1e-5 degrees, a review).
+    // Only where the answer could not be resolved: an iteration limit has
+    // other causes (a review: 'Maximum iterations = 1').
     const std::string material =
-      nearly_incompressible(parameters.materials.classes);
+      report.status == lcp::Status::inaccurate ?
+        nearly_incompressible(parameters.materials.classes) :
+        "";
     if (!free_motions.empty())
       return Scene::failure_description(report) + unused +
              ": if the loads do any work along such a motion, " + structure +

@@ -522,11 +522,10 @@ namespace unilateral::masonry
 
     /**
      * The text of gmsh file @p file with @p shift added to its nodes'
-     * first dim coordinates (for GridIn, see GmshScan::local_origin).
-     * A coordinate line is told by its number of words, as gmsh writes the
-     * files: "tag x y z" in format 2.2, "x y z" in 4.1 (whose other lines
-     * there have one or four). A file laid out otherwise is found out
-     * after reading, where its cells are looked up by their centroids.
+     * first dim coordinates (for GridIn, see GmshScan::local_origin). The
+     * $Nodes section is read word by word by its grammar in format @p
+     * version (scan_gmsh has checked it), whatever its lines hold, and
+     * written a node to a line; the other sections are copied.
      */
     template <int dim>
     std::string
@@ -537,30 +536,52 @@ namespace unilateral::masonry
       std::ifstream      in(file);
       std::ostringstream out;
       out << std::setprecision(17);
-      const std::size_t words_before = version == 2.2 ? 1 : 0;
-      bool              in_nodes     = false;
-      std::string       line;
+      std::string line;
       while (std::getline(in, line))
         {
-          std::istringstream       tokens(line);
-          std::vector<std::string> words;
-          for (std::string word; tokens >> word;)
-            words.push_back(word);
-          if (words.size() == 1 &&
-              (words[0] == "$Nodes" || words[0] == "$EndNodes"))
-            in_nodes = words[0] == "$Nodes";
-          else if (in_nodes && words.size() == words_before + 3)
-            {
-              for (std::size_t w = 0; w < words_before; ++w)
-                out << words[w] << ' ';
-              for (unsigned int d = 0; d < 3; ++d)
-                out << (d < dim ?
-                          std::stod(words[words_before + d]) + shift[d] :
-                          std::stod(words[words_before + d]))
-                    << (d < 2 ? ' ' : '\n');
-              continue;
-            }
           out << line << '\n';
+          if (dealii::Utilities::trim(line) != "$Nodes")
+            continue;
+          std::vector<std::string> words;
+          for (std::string word; in >> word && word != "$EndNodes";)
+            words.push_back(word);
+          std::size_t at   = 0;
+          const auto  next = [&words, &at]() { return words.at(at++); };
+          const auto  node = [&]() {
+            for (unsigned int d = 0; d < 3; ++d)
+              out << std::stod(next()) + (d < dim ? shift[d] : 0.0)
+                  << (d < 2 ? ' ' : '\n');
+          };
+          if (version == 2.2)
+            {
+              const long n = std::stol(next());
+              out << n << '\n';
+              for (long i = 0; i < n; ++i)
+                {
+                  out << next() << ' ';
+                  node();
+                }
+            }
+          else
+            {
+              const long blocks = std::stol(next());
+              out << blocks;
+              for (unsigned int w = 0; w < 3; ++w)
+                out << ' ' << next();
+              out << '\n';
+              for (long b = 0; b < blocks; ++b)
+                {
+                  for (unsigned int w = 0; w < 3; ++w)
+                    out << next() << ' ';
+                  const long count = std::stol(next());
+                  out << count << '\n';
+                  for (long i = 0; i < count; ++i)
+                    out << next() << '\n';
+                  for (long i = 0; i < count; ++i)
+                    node();
+                }
+            }
+          out << "$EndNodes\n";
         }
       return out.str();
     }

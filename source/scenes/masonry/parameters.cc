@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <tuple>
 
 namespace unilateral::masonry
@@ -37,21 +36,6 @@ namespace unilateral::masonry
     const std::string default_thickness       = "1";
     const std::string default_gap             = "g";
 
-    /// Whether every ';'-separated component of @p vector is the number 0
-    /// ('0; 0', '0', '0.0; 0'); an expression counts as not zero.
-    bool
-    all_zero(const std::string &vector)
-    {
-      for (const std::string &component :
-           dealii::Utilities::split_string_list(vector, ';'))
-        {
-          char        *end   = nullptr;
-          const double value = std::strtod(component.c_str(), &end);
-          if (component.empty() || *end != '\0' || value != 0)
-            return false;
-        }
-      return true;
-    }
 
     std::vector<double>
     get_doubles(dealii::ParameterHandler &prm,
@@ -300,8 +284,9 @@ namespace unilateral::masonry
                      false},
           std::tuple{"Thickness", default_thickness, false}})
       {
+        // As numbers: '1.0' is the default '1' (a review).
         const std::string value = prm.get(name);
-        check_parameter(value == default_value ||
+        check_parameter(prm.get_double(name) == std::stod(default_value) ||
                           (!from_mesh_file &&
                            (built_in_only || dimension == 3)),
                         geometry_section,
@@ -469,22 +454,9 @@ namespace unilateral::masonry
     traction                = parse_selections(prm.get("Traction boundaries"),
                                 boundary_section + "/Traction boundaries");
     traction_value          = prm.get("Traction");
-    // Values that no boundary would take are refused rather than dropped
-    // (a review: a traction of '0; -5' with no 'Traction boundaries' left
-    // the wall unloaded, exit 0).
-    check_parameter(!traction.empty() || all_zero(traction_value),
-                    boundary_section,
-                    "Traction",
-                    traction_value,
-                    "loads no boundary ('Traction boundaries' is empty): "
-                    "name the boundaries it loads, or set it to 0");
-    check_parameter(!prescribed.empty() || all_zero(prescribed_displacement),
-                    boundary_section,
-                    "Prescribed displacement",
-                    prescribed_displacement,
-                    "moves no boundary ('Prescribed displacement "
-                    "boundaries' is empty): name the boundaries it moves, "
-                    "or set it to 0");
+    // A gap that no boundary would take is refused rather than dropped
+    // (a review); so are a traction and a prescribed displacement
+    // (make_supports, which knows their components).
     check_parameter(!signorini.empty() ||
                       dealii::Utilities::trim(gap) == default_gap,
                     boundary_section,

@@ -81,6 +81,16 @@ namespace unilateral::masonry
       return function;
     }
 
+    /// Whether @p component is the number 0 ('0', '0.0', '-0', '0e5');
+    /// an expression is not, even one that is zero everywhere.
+    bool
+    is_zero(const std::string &component)
+    {
+      char        *end   = nullptr;
+      const double value = std::strtod(component.c_str(), &end);
+      return !component.empty() && *end == '\0' && value == 0;
+    }
+
     /// "a; b; c" as dim expressions; all-zero vectors may have fewer.
     std::vector<std::string>
     vector_components(const std::string &text,
@@ -89,9 +99,8 @@ namespace unilateral::masonry
     {
       std::vector<std::string> components =
         dealii::Utilities::split_string_list(text, ';');
-      bool zero = true;
-      for (const std::string &c : components)
-        zero = zero && (c == "0" || c == "0.0" || c == "0.");
+      const bool zero =
+        std::all_of(components.begin(), components.end(), is_zero);
       if (zero && components.size() <= 3)
         components.assign(dim, "0");
       check_parameter(components.size() == dim,
@@ -246,10 +255,12 @@ namespace unilateral::masonry
                                        constants,
                                        "Signorini gap",
                                        parameters.gap);
+    const std::vector<std::string> prescribed =
+      vector_components(parameters.prescribed_displacement,
+                        dim,
+                        "Prescribed displacement");
     supports.displacement =
-      parse_function<dim>(vector_components(parameters.prescribed_displacement,
-                                            dim,
-                                            "Prescribed displacement"),
+      parse_function<dim>(prescribed,
                           constants,
                           "Prescribed displacement",
                           parameters.prescribed_displacement);
@@ -259,10 +270,28 @@ namespace unilateral::masonry
                                             constants,
                                             "Traction",
                                             parameters.traction_value);
+    // Values that no boundary would take are refused rather than dropped
+    // (a review: a traction of '0; -5' with no 'Traction boundaries' left
+    // the wall unloaded, exit 0).
+    check_parameter(!parameters.traction.empty() ||
+                      std::all_of(traction.begin(), traction.end(), is_zero),
+                    section,
+                    "Traction",
+                    parameters.traction_value,
+                    "loads no boundary ('Traction boundaries' is empty): "
+                    "name the boundaries it loads, or set it to 0");
+    check_parameter(!parameters.prescribed.empty() ||
+                      std::all_of(prescribed.begin(),
+                                  prescribed.end(),
+                                  is_zero),
+                    section,
+                    "Prescribed displacement",
+                    parameters.prescribed_displacement,
+                    "moves no boundary ('Prescribed displacement "
+                    "boundaries' is empty): name the boundaries it moves, or "
+                    "set it to 0");
     supports.zero_traction =
-      std::all_of(traction.begin(), traction.end(), [](const std::string &c) {
-        return c == "0";
-      });
+      std::all_of(traction.begin(), traction.end(), is_zero);
     for (unsigned int d = 0; d < dim; ++d)
       supports.gravity[d] =
         parameters.gravity * parameters.gravity_direction[d];
