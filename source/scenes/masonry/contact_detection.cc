@@ -1324,6 +1324,11 @@ namespace unilateral::masonry
       for (std::size_t f = 0; f < faces.size(); ++f)
         if (!joint_nodes[f].empty())
           {
+            // Each node once (a pair has a record from each of its faces).
+            std::sort(joint_nodes[f].begin(), joint_nodes[f].end());
+            joint_nodes[f].erase(std::unique(joint_nodes[f].begin(),
+                                             joint_nodes[f].end()),
+                                 joint_nodes[f].end());
             dealii::Point<dim> middle;
             for (const unsigned int node : joint_nodes[f])
               middle += as_tensor<dim>(result.node_position[node]) /
