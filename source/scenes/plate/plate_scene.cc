@@ -74,7 +74,7 @@ namespace unilateral::plate
   }
 
   void
-  PlateScene::make_grid(RunContext &)
+  PlateScene::make_grid(RunContext &context)
   {
     const Geometry &geometry = parameters.geometry;
     // Refused before anything is built where the mesh and its DOFs alone
@@ -91,6 +91,12 @@ namespace unilateral::plate
       {geometry.n_x, geometry.n_y},
       dealii::Point<2>(0, 0),
       dealii::Point<2>(geometry.length_x, geometry.length_y));
+    // Progress through the set-up, as the masonry scene's (a review: a
+    // large plate assembled for seconds without a line).
+    context.stage(registered_name,
+                  std::to_string(geometry.n_x) + " x " +
+                    std::to_string(geometry.n_y) +
+                    " Bogner-Fox-Schmit elements");
   }
 
   void
@@ -203,7 +209,7 @@ namespace unilateral::plate
                 if (near > 0 && near > further / 3 && near > obstacle_on_edge)
                   {
                     obstacle_on_edge    = near;
-                    obstacle_on_edge_at = on_edge;
+                    obstacle_on_edge_at = on_edge + delta * inward;
                   }
               }
           }
@@ -213,6 +219,9 @@ namespace unilateral::plate
   void
   PlateScene::assemble_system(RunContext &context)
   {
+    context.stage(registered_name,
+                  "assembling the bending stiffness (" +
+                    std::to_string(free_dofs.size()) + " free DOFs)");
     assemble_plate_system(dof_handler,
                           free_dofs,
                           nullptr,
@@ -341,9 +350,11 @@ namespace unilateral::plate
     // centre deflection 1.1, 15 and 37 mm on 20, 64 and 128 elements).
     if (obstacle != nullptr && obstacle_on_edge > 0)
       out << "  note: the obstacle rises above the clamped edge (psi = "
-          << obstacle_on_edge << " mm just inside it at ("
+          << obstacle_on_edge << " mm at (" << std::setprecision(8)
           << obstacle_on_edge_at[0] << ", " << obstacle_on_edge_at[1]
-          << "), where w = 0 and its slope is 0): the plate must climb onto "
+          << std::setprecision(6)
+          << "), just inside the edge, where w = 0 and its slope is 0): the "
+             "plate must climb onto "
              "it within one element of the edge, so the answer depends on "
              "the mesh and grows as it is refined; an obstacle under a "
              "clamped plate is negative at the edge, or rises from 0 there "

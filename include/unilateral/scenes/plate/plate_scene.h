@@ -190,8 +190,8 @@ namespace unilateral::plate
     double                                       unit = 1;
     std::unique_ptr<dealii::Function<2, double>> obstacle; ///< null: none
     /// The obstacle's largest value just inside the clamped edge where it
-    /// rises there slower than the plate can (0: nowhere), and the edge
-    /// point it is taken at (set up with the bounds).
+    /// rises there slower than the plate can (0: nowhere), and the point
+    /// just inside the edge it is taken at (set up with the bounds).
     double           obstacle_on_edge = 0;
     dealii::Point<2> obstacle_on_edge_at;
     /// A coarser mesh that this plate builds for a start or a hierarchy:
