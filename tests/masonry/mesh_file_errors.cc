@@ -453,17 +453,19 @@ main()
   // a block [1, 3] x [1, 2] on the middle of one [0, 4] x [0, 1] of two
   // cells, a traction (0, -1) on its top where x < 0.5 or x <= 1): the
   // load is the weight 6 and the traction's 0.5 or 1.
+  const std::string resting_block =
+    header + "$PhysicalNames\n2\n1 101 \"base\"\n1 102 \"top\"\n"
+             "$EndPhysicalNames\n$Nodes\n10\n1 0 0 0\n2 2 0 0\n"
+             "3 4 0 0\n4 0 1 0\n5 2 1 0\n6 4 1 0\n7 1 1 0\n8 3 1 0\n"
+             "9 1 2 0\n10 3 2 0\n$EndNodes\n$Elements\n8\n"
+             "1 3 2 1 1 1 2 5 4\n2 3 2 1 1 2 3 6 5\n3 3 2 1 2 7 8 10 9\n"
+             "4 1 2 101 101 1 2\n5 1 2 101 101 2 3\n6 1 2 102 102 4 5\n"
+             "7 1 2 102 102 5 6\n8 1 2 102 102 9 10\n$EndElements\n";
   for (const std::string region : {"x < 0.5", "x <= 1"})
     {
       const Result result = run_mesh(
         "partial",
-        header + "$PhysicalNames\n2\n1 101 \"base\"\n1 102 \"top\"\n"
-                 "$EndPhysicalNames\n$Nodes\n10\n1 0 0 0\n2 2 0 0\n"
-                 "3 4 0 0\n4 0 1 0\n5 2 1 0\n6 4 1 0\n7 1 1 0\n8 3 1 0\n"
-                 "9 1 2 0\n10 3 2 0\n$EndNodes\n$Elements\n8\n"
-                 "1 3 2 1 1 1 2 5 4\n2 3 2 1 1 2 3 6 5\n3 3 2 1 2 7 8 10 9\n"
-                 "4 1 2 101 101 1 2\n5 1 2 101 101 2 3\n6 1 2 102 102 4 5\n"
-                 "7 1 2 102 102 5 6\n8 1 2 102 102 9 10\n$EndElements\n",
+        resting_block,
         "  subsection Boundary conditions\n    set Traction boundaries = top "
         "where " +
           region + "\n    set Traction = 0; -1\n  end\n");
@@ -481,6 +483,22 @@ main()
                           1e-12)
                 << "\n";
     }
+  // A Signorini support constrains nodes: on the free part it is meant,
+  // at the joint's end node (x <= 1) refused, as inside the joint.
+  {
+    const Result result = run_mesh("partial",
+                                   resting_block,
+                                   "  subsection Boundary conditions\n"
+                                   "    set Signorini = top where x < 0.5\n"
+                                   "  end\n");
+    std::cout << "a Signorini support on the free part of a face partly a "
+                 "joint: exit code "
+              << result.code << "\n";
+  }
+  bad("a Signorini support at a joint's end node",
+      resting_block,
+      "  subsection Boundary conditions\n"
+      "    set Signorini = top where x <= 1\n  end\n");
   bad("a traction on a joint",
       stacked_squares,
       "  subsection Boundary conditions\n    set Fixed = base where y < 0.5\n"

@@ -1315,10 +1315,12 @@ namespace unilateral::masonry
       // would set the block on a rigid support where the other block is;
       // a traction there would load the faces of both blocks, twice the
       // load and inside the structure (a review: 'Traction boundaries =
-      // collar'). Judged inside the joint, off its edges: a region that
-      // keeps a support to the free part of a face partly a joint (a block
-      // resting on the middle of another's top), ending where the joint
-      // begins, is meant (a review). (Rollers and held nodes on
+      // collar'). A Signorini support constrains nodes: refused at any
+      // node of the joint. A traction loads the face's area: judged inside
+      // the joint, off its edges, so that a region that keeps it to the
+      // free part of a face partly a joint (a block resting on the middle
+      // of another's top), ending where the joint begins, is accepted (a
+      // review). (Rollers and held nodes on
       // joints are two-sided and meant: the symmetry plane of an extruded
       // wall.)
       for (std::size_t f = 0; f < faces.size(); ++f)
@@ -1340,24 +1342,34 @@ namespace unilateral::masonry
               inside.push_back(
                 middle + 0.5 * (as_tensor<dim>(result.node_position[node]) -
                                 dealii::Tensor<1, dim>(middle)));
+            std::vector<dealii::Point<dim>> at_nodes;
+            for (const unsigned int node : joint_nodes[f])
+              at_nodes.emplace_back(as_tensor<dim>(result.node_position[node]));
             for (const Support<dim> *support :
                  supports.on_boundary(faces[f].boundary))
-              if ((support->kind == Kind::signorini ||
-                   (support->kind == Kind::traction &&
-                    !supports.zero_traction)) &&
-                  std::any_of(inside.begin(),
-                              inside.end(),
-                              [&](const dealii::Point<dim> &point) {
-                                return supports.acts_at(*support,
-                                                        point,
-                                                        faces[f].vertices);
-                              }))
+              {
+                if (support->kind != Kind::signorini &&
+                    (support->kind != Kind::traction || supports.zero_traction))
+                  continue;
+                const std::vector<dealii::Point<dim>> &points =
+                  support->kind == Kind::signorini ? at_nodes : inside;
+                const auto acted_on =
+                  std::find_if(points.begin(),
+                               points.end(),
+                               [&](const dealii::Point<dim> &point) {
+                                 return supports.acts_at(*support,
+                                                         point,
+                                                         faces[f].vertices);
+                               });
+                if (acted_on == points.end())
+                  continue;
                 throw InputError(
                   support->description + " acts on a face of block " +
                   std::to_string(faces[f].block) +
                   " that is a joint with block " +
-                  std::to_string(partner_block[f]) + " (the joint's middle " +
-                  describe_point<dim>(as_array<dim>(middle), faces[f].block) +
+                  std::to_string(partner_block[f]) + " (at " +
+                  describe_point<dim>(as_array<dim>(*acted_on),
+                                      faces[f].block) +
                   "): " +
                   (support->kind == Kind::signorini ?
                      "it would set the block on a rigid support where "
@@ -1369,6 +1381,7 @@ namespace unilateral::masonry
                   "boundary, or (in a mesh file) take the joint's faces "
                   "out of the group '" +
                   support->name + "'");
+              }
           }
     }
 
