@@ -2,6 +2,7 @@
 #include <unilateral/base/blas_threads.h>
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/memory.h>
+#include <unilateral/base/output_file.h>
 #include <unilateral/base/parameter_file_errors.h>
 #include <unilateral/base/prefixed_lines.h>
 #include <unilateral/base/ranks.h>
@@ -267,12 +268,9 @@ namespace unilateral
         {
           const std::filesystem::path &file = entry.path();
           std::error_code              error;
-          // A file of ours a killed run left half written (output_file.h).
-          std::string name = file.filename().string();
-          if (name.size() > 8 && name.substr(name.size() - 8) == ".partial")
-            name.resize(name.size() - 8);
+          // Also a file of ours a killed run left half written.
           if (!entry.is_regular_file() ||
-              (names.count(name) == 0 &&
+              (names.count(name_when_written(file.filename().string())) == 0 &&
                !std::regex_match(file.filename().string(), ours)) ||
               std::filesystem::equivalent(file, parameter_file, error))
             continue;

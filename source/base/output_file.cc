@@ -16,12 +16,24 @@ namespace unilateral
 
   namespace
   {
+    const std::string partial_suffix = ".partial";
+
     std::string
     partial_name(const std::string &name)
     {
-      return name + ".partial";
+      return name + partial_suffix;
     }
   } // namespace
+
+  std::string
+  name_when_written(const std::string &file_name)
+  {
+    const std::size_t n = partial_suffix.size();
+    return file_name.size() > n &&
+               file_name.compare(file_name.size() - n, n, partial_suffix) == 0 ?
+             file_name.substr(0, file_name.size() - n) :
+             file_name;
+  }
 
   std::ofstream
   open_for_writing(const std::string &name)

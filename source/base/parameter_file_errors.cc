@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <climits>
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -679,12 +678,9 @@ namespace unilateral
         return false;
       for (std::size_t i = 0; i < a.size(); ++i)
         {
-          char        *end_a = nullptr, *end_b = nullptr;
-          const double x           = std::strtod(a[i].c_str(), &end_a);
-          const double y           = std::strtod(b[i].c_str(), &end_b);
-          const bool   same_number = !a[i].empty() && !b[i].empty() &&
-                                   *end_a == '\0' && *end_b == '\0' && x == y;
-          if (a[i] != b[i] && !same_number)
+          double x = 0, y = 0;
+          if (a[i] != b[i] &&
+              !(parse_number(a[i], x) && parse_number(b[i], y) && x == y))
             return false;
         }
       return true;

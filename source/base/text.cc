@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 
 namespace unilateral
 {
@@ -59,5 +60,15 @@ namespace unilateral
           best_distance = d;
         }
     return best == nullptr ? "" : *best;
+  }
+
+  bool
+  parse_number(const std::string &text, double &value)
+  {
+    if (text.empty())
+      return false;
+    char *end = nullptr;
+    value     = std::strtod(text.c_str(), &end);
+    return end == text.c_str() + text.size();
   }
 } // namespace unilateral

@@ -1,5 +1,6 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/output_file.h>
+#include <unilateral/base/text.h>
 #include <unilateral/lcp/io.h>
 
 #include <algorithm>
@@ -53,17 +54,6 @@ namespace unilateral::lcp
       const auto first = line.find_first_not_of(" \t\r");
       return first == std::string::npos || line[first] == '%' ||
              line[first] == '#';
-    }
-
-    // Parse a number, accepting what strtod accepts and nothing more.
-    bool
-    parse_number(const std::string &token, double &value)
-    {
-      if (token.empty())
-        return false;
-      char *end = nullptr;
-      value     = std::strtod(token.c_str(), &end);
-      return end == token.c_str() + token.size();
     }
 
     /// A line quoted in a message, cut after 60 characters.

@@ -29,5 +29,10 @@ namespace unilateral
   /// Closes @p file (as close_written_file) and gives it its name @p name.
   void
   finish_writing(std::ofstream &file, const std::string &name);
+
+  /// The name of the file that @p file_name, a file being written, will
+  /// have; @p file_name itself for any other file.
+  std::string
+  name_when_written(const std::string &file_name);
   /// @}
 } // namespace unilateral

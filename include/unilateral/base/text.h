@@ -17,4 +17,9 @@ namespace unilateral
   /// empty.
   std::string
   nearest_name(const std::string &name, const std::vector<std::string> &names);
+
+  /// Reads @p text as one number, accepting what strtod accepts and
+  /// nothing more (no space, no trailing characters); false if it is not.
+  bool
+  parse_number(const std::string &text, double &value);
 } // namespace unilateral

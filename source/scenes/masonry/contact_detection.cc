@@ -1287,16 +1287,27 @@ namespace unilateral::masonry
       std::vector<char> joined(faces.size(), 0);
       // The block across each joined face.
       std::vector<long> partner_block(faces.size(), -1);
-      // Each face's nodes in a joint on it (a face may be one in part: a
-      // block resting on the middle of another's top).
+      // The supports judged on joints below, and the faces they are named
+      // on (none on the paper's walls, whose joints are nameless).
+      const auto judged = [&](const Support<dim> &support) {
+        return support.kind == Kind::signorini ||
+               (support.kind == Kind::traction && !supports.zero_traction);
+      };
+      std::vector<char> judged_face(faces.size(), 0);
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        for (const Support<dim> *support :
+             supports.on_boundary(faces[f].boundary))
+          judged_face[f] = judged_face[f] || judged(*support);
+      // Those faces' nodes in a joint on them (a face may be one in part:
+      // a block resting on the middle of another's top).
       std::vector<std::vector<unsigned int>> joint_nodes(faces.size());
       for (const auto &[pair, record] : joint_pairs)
         {
           for (const std::size_t f : {record.face_first, record.face_second})
             for (const unsigned int node : {pair.first, pair.second})
-              if (std::find(faces[f].nodes.begin(),
-                            faces[f].nodes.end(),
-                            node) != faces[f].nodes.end())
+              if (judged_face[f] && std::find(faces[f].nodes.begin(),
+                                              faces[f].nodes.end(),
+                                              node) != faces[f].nodes.end())
                 joint_nodes[f].push_back(node);
           joined[record.face_first] = joined[record.face_second] = 1;
           partner_block[record.face_first]  = faces[record.face_second].block;
@@ -1331,25 +1342,24 @@ namespace unilateral::masonry
             joint_nodes[f].erase(std::unique(joint_nodes[f].begin(),
                                              joint_nodes[f].end()),
                                  joint_nodes[f].end());
-            dealii::Point<dim> middle;
+            std::vector<dealii::Point<dim>> at_nodes;
+            dealii::Point<dim>              middle;
             for (const unsigned int node : joint_nodes[f])
-              middle += as_tensor<dim>(result.node_position[node]) /
-                        static_cast<double>(joint_nodes[f].size());
+              {
+                at_nodes.emplace_back(
+                  as_tensor<dim>(result.node_position[node]));
+                middle +=
+                  at_nodes.back() / static_cast<double>(joint_nodes[f].size());
+              }
             // The joint's middle, and points half way from it to each of
             // its nodes: inside the joint, off its edges.
             std::vector<dealii::Point<dim>> inside = {middle};
-            for (const unsigned int node : joint_nodes[f])
-              inside.push_back(
-                middle + 0.5 * (as_tensor<dim>(result.node_position[node]) -
-                                dealii::Tensor<1, dim>(middle)));
-            std::vector<dealii::Point<dim>> at_nodes;
-            for (const unsigned int node : joint_nodes[f])
-              at_nodes.emplace_back(as_tensor<dim>(result.node_position[node]));
+            for (const dealii::Point<dim> &node : at_nodes)
+              inside.push_back(middle + 0.5 * (node - middle));
             for (const Support<dim> *support :
                  supports.on_boundary(faces[f].boundary))
               {
-                if (support->kind != Kind::signorini &&
-                    (support->kind != Kind::traction || supports.zero_traction))
+                if (!judged(*support))
                   continue;
                 const std::vector<dealii::Point<dim>> &points =
                   support->kind == Kind::signorini ? at_nodes : inside;

@@ -882,15 +882,16 @@ namespace unilateral::masonry
       note << std::setprecision(3);
       for (std::size_t k = 0; k < classes.size(); ++k)
         {
-          const double nu = classes[k].poissons_ratio;
+          const MaterialClass &material = classes[k];
           // (lambda + 2 mu) / mu, the plane-strain wave-speed ratio squared.
-          const double contrast = 2 * (1 - nu) / (1 - 2 * nu);
+          const double contrast =
+            (material.lambda() + 2 * material.mu()) / material.mu();
           if (contrast > 1e3)
             {
               note << "; the likely cause: 'Masonry/Materials/Poisson's "
                       "ratio' = "
-                   << std::setprecision(12) << nu << std::setprecision(3)
-                   << " (class " << k
+                   << std::setprecision(12) << material.poissons_ratio
+                   << std::setprecision(3) << " (class " << k
                    << ") makes that material's volumetric stiffness "
                    << contrast
                    << " times its shear stiffness, more than displacement "
@@ -965,15 +966,16 @@ namespace unilateral::masonry
              "held by a support or a closed joint: " +
              structure + " has no equilibrium, or a block can move freely" +
              unused + " (" + report.message + ")";
-    // An answer that is not resolved, where something can move freely: the
-    // loads may drive it by less than the solver's proof of no solution
-    // needs (a block on a frictionless slope of 1e-5 degrees, a review).
-    // Only where the answer could not be resolved: an iteration limit has
-    // other causes (a review: 'Maximum iterations = 1').
+    // A nearly incompressible material, only where the answer could not be
+    // resolved: an iteration limit has other causes (a review: 'Maximum
+    // iterations = 1').
     const std::string material =
       report.status == lcp::Status::inaccurate ?
         nearly_incompressible(parameters.materials.classes) :
         "";
+    // An answer that is not resolved, where something can move freely: the
+    // loads may drive it by less than the solver's proof of no solution
+    // needs (a block on a frictionless slope of 1e-5 degrees, a review).
     if (!free_motions.empty())
       return Scene::failure_description(report) + unused +
              ": if the loads do any work along such a motion, " + structure +

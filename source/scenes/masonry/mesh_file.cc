@@ -1260,10 +1260,9 @@ namespace unilateral::masonry
     triangulation.clear();
     try
       {
-        std::vector<dealii::Point<dim>> near_origin = vertices;
-        for (dealii::Point<dim> &vertex : near_origin)
+        for (dealii::Point<dim> &vertex : vertices)
           vertex -= scan.local_origin;
-        triangulation.create_triangulation(near_origin,
+        triangulation.create_triangulation(vertices,
                                            cells,
                                            dealii::SubCellData());
         dealii::GridTools::shift(scan.local_origin, triangulation);

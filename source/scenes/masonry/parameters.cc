@@ -1,4 +1,5 @@
 #include <unilateral/base/input_error.h>
+#include <unilateral/base/text.h>
 #include <unilateral/lcp/solver.h>
 #include <unilateral/scenes/masonry/parameters.h>
 
@@ -36,7 +37,6 @@ namespace unilateral::masonry
     const std::string default_thickness       = "1";
     const std::string default_gap             = "g";
 
-
     std::vector<double>
     get_doubles(dealii::ParameterHandler &prm,
                 const std::string        &section,
@@ -47,10 +47,8 @@ namespace unilateral::masonry
       for (const std::string &item :
            dealii::Utilities::split_string_list(text, ','))
         {
-          char        *end   = nullptr;
-          const double value = std::strtod(item.c_str(), &end);
-          check_parameter(end != item.c_str() && *end == '\0' &&
-                            std::isfinite(value),
+          double value = 0;
+          check_parameter(parse_number(item, value) && std::isfinite(value),
                           section,
                           name,
                           text,

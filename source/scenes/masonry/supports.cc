@@ -86,9 +86,8 @@ namespace unilateral::masonry
     bool
     is_zero(const std::string &component)
     {
-      char        *end   = nullptr;
-      const double value = std::strtod(component.c_str(), &end);
-      return !component.empty() && *end == '\0' && value == 0;
+      double value = 0;
+      return parse_number(component, value) && value == 0;
     }
 
     /// "a; b; c" as dim expressions; all-zero vectors may have fewer.
@@ -270,11 +269,12 @@ namespace unilateral::masonry
                                             constants,
                                             "Traction",
                                             parameters.traction_value);
+    supports.zero_traction =
+      std::all_of(traction.begin(), traction.end(), is_zero);
     // Values that no boundary would take are refused rather than dropped
     // (a review: a traction of '0; -5' with no 'Traction boundaries' left
     // the wall unloaded, exit 0).
-    check_parameter(!parameters.traction.empty() ||
-                      std::all_of(traction.begin(), traction.end(), is_zero),
+    check_parameter(!parameters.traction.empty() || supports.zero_traction,
                     section,
                     "Traction",
                     parameters.traction_value,
@@ -290,8 +290,6 @@ namespace unilateral::masonry
                     "moves no boundary ('Prescribed displacement "
                     "boundaries' is empty): name the boundaries it moves, or "
                     "set it to 0");
-    supports.zero_traction =
-      std::all_of(traction.begin(), traction.end(), is_zero);
     for (unsigned int d = 0; d < dim; ++d)
       supports.gravity[d] =
         parameters.gravity * parameters.gravity_direction[d];
