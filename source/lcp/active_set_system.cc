@@ -241,25 +241,13 @@ namespace unilateral::lcp
         own->n_free = n - n_fixed;
         // This factor may be modified row by row (modify_factor).
         own->cholesky.relaxed_supernodes = false;
-        if (reduced.rows() != n || reduced.nonZeros() != A.nonZeros())
-          reduced = A;
-        for (Index j = 0; j < A.outerSize(); ++j)
-          for (Index k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1];
-               ++k)
-            {
-              const Index i = A.innerIndexPtr()[k];
-              if (fixed[i] || fixed[j])
-                reduced.valuePtr()[k] = (i == j) ? fixed_diagonal[i] : 0.0;
-              else
-                reduced.valuePtr()[k] =
-                  A.valuePtr()[k] + (i == j ? shift : 0.0);
-            }
         // The one AMD ordering of A serves both ways of factorising: an
         // analysis that orders A again would repeat the ordering of the
         // whole matrix (benchmarks/masonry_tables/README.md, "Design
         // measurements").
         order_once();
-        own_valid = own->cholesky.factorise(reduced, full_ordering, counters);
+        own_valid = own->cholesky.factorise_with_fixed(
+          A, fixed, fixed_diagonal, shift, full_ordering, counters);
         // The first factorisation of the full pattern taken for a settling
         // set (A_FF would have been taken otherwise) shows what it costs
         // against A_FF alone.
@@ -290,14 +278,16 @@ namespace unilateral::lcp
     // both): half the memory, and CHOLMOD's factorisation, which permutes
     // the whole matrix it is given, no longer passes over the lower half
     // only to skip it (stack bond m = 225: 0.42 -> 0.31 s in 4 calls).
+    // A copy for this factorisation alone: CHOLMOD keeps none of it.
+    SparseMatrix free_part;
     free_block(A,
                own->reduced_index,
                n_free,
                shift,
                !own->cholesky.distributed(),
-               reduced);
+               free_part);
     own->cholesky.relaxed_supernodes = true; // never modified
-    own_valid = own->cholesky.factorise(reduced, ordering, counters);
+    own_valid = own->cholesky.factorise(free_part, ordering, counters);
     if (own_valid)
       reduced_factor_flops = own->cholesky.factorisation_flops();
     return own_valid;

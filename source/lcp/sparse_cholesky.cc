@@ -208,6 +208,9 @@ namespace unilateral::lcp
     bool
     build_permuted(const SparseMatrix &A);
 
+    void
+    fill_permuted(const SparseMatrix &A, const FixedIndices *fixed);
+
     bool
     row_pattern(Index position, const std::vector<Index> &column_rows);
 
@@ -224,6 +227,34 @@ namespace unilateral::lcp
       for (Index k = 0; k < A.nonZeros(); ++k)
         mix(A.innerIndexPtr()[k]);
       return hash;
+    }
+  };
+
+  /// The fixed indices of factorise_with_fixed and what they do to A.
+  struct SparseCholesky::FixedIndices
+  {
+    const std::vector<char> &fixed;
+    const Vector            &diagonal;
+    const double             shift;
+
+    /// Entry (i, j) of the factorised matrix, @p a that of A.
+    double
+    value(const Index i, const Index j, const double a) const
+    {
+      if (fixed[i] || fixed[j])
+        return i == j ? diagonal[i] : 0.0;
+      return i == j ? a + shift : a;
+    }
+
+    /// The factorised matrix as a copy of A (both triangles).
+    SparseMatrix
+    applied_to(const SparseMatrix &A) const
+    {
+      SparseMatrix result = A;
+      for (Index j = 0; j < result.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(result, j); it; ++it)
+          it.valueRef() = value(it.row(), j, it.value());
+      return result;
     }
   };
 
@@ -349,6 +380,27 @@ namespace unilateral::lcp
                             const std::vector<Index> &ordering,
                             Counters                 &counters)
   {
+    return factorise(A, ordering, nullptr, counters);
+  }
+
+  bool
+  SparseCholesky::factorise_with_fixed(const SparseMatrix       &A,
+                                       const std::vector<char>  &fixed,
+                                       const Vector             &fixed_diagonal,
+                                       const double              shift,
+                                       const std::vector<Index> &ordering,
+                                       Counters                 &counters)
+  {
+    const FixedIndices fixed_indices{fixed, fixed_diagonal, shift};
+    return factorise(A, ordering, &fixed_indices, counters);
+  }
+
+  bool
+  SparseCholesky::factorise(const SparseMatrix       &A,
+                            const std::vector<Index> &ordering,
+                            const FixedIndices       *fixed,
+                            Counters                 &counters)
+  {
     if (!A.isCompressed())
       throw std::logic_error("SparseCholesky needs a compressed matrix");
     auto &impl = *implementation;
@@ -357,14 +409,20 @@ namespace unilateral::lcp
     // the dense kernels keep BLAS's own threads.
     openmp::run_regions_serially();
     if (impl.distributed) // MUMPS orders the matrix itself
-      return impl.factor_valid =
-               impl.distributed->factorise(A, minimum_rcond, counters);
+      {
+        if (fixed != nullptr)
+          return impl.factor_valid =
+                   impl.distributed->factorise(fixed->applied_to(A),
+                                               minimum_rcond,
+                                               counters);
+        return impl.factor_valid =
+                 impl.distributed->factorise(A, minimum_rcond, counters);
+      }
     if (A.rows() == 0) // nothing to factorise (CHOLMOD rejects 0 x 0)
       {
         impl.factor_valid = true;
         return true;
       }
-    cholmod_sparse matrix = Implementation::view(A);
 
     const std::uint64_t hash = Implementation::hash_pattern(A);
     if (impl.factor == nullptr || impl.pattern_size != A.rows() ||
@@ -381,21 +439,29 @@ namespace unilateral::lcp
       cholmod_free_factor(&impl.modified, &impl.common);
     impl.modification_flops = 0;
     // A pattern factorised again (the full pattern for every active set,
-    // the interior point's matrix in every iteration) is permuted once; a
-    // pattern used once (A_FF of one active set) is left to CHOLMOD.
-    if (impl.factor->is_super && impl.factorisations_of_pattern > 0 &&
+    // the interior point's matrix in every iteration) is permuted once, and
+    // so is A with fixed indices, which is never copied; a pattern used
+    // once (A_FF of one active set) is left to CHOLMOD.
+    if (impl.factor->is_super &&
+        (impl.factorisations_of_pattern > 0 || fixed != nullptr) &&
         (impl.permuted != nullptr || impl.build_permuted(A)))
       {
-        double *const       value  = static_cast<double *>(impl.permuted->x);
-        const double *const source = A.valuePtr();
-        for (std::size_t e = 0; e < impl.permuted_source.size(); ++e)
-          value[e] = source[impl.permuted_source[e]];
+        impl.fill_permuted(A, fixed);
         double zero[2] = {0, 0};
         cholmod_super_numeric(
           impl.permuted, nullptr, zero, impl.factor, &impl.common);
       }
+    else if (fixed != nullptr) // a simplicial factor, or no room to permute
+      {
+        const SparseMatrix applied = fixed->applied_to(A);
+        cholmod_sparse     matrix  = Implementation::view(applied);
+        cholmod_factorize(&matrix, impl.factor, &impl.common);
+      }
     else
-      cholmod_factorize(&matrix, impl.factor, &impl.common);
+      {
+        cholmod_sparse matrix = Implementation::view(A);
+        cholmod_factorize(&matrix, impl.factor, &impl.common);
+      }
     ++impl.factorisations_of_pattern;
     ++counters.numeric_factorisations;
     impl.factor_valid = (impl.common.status == CHOLMOD_OK &&
@@ -436,6 +502,17 @@ namespace unilateral::lcp
         impl.modified = cholmod_copy_factor(impl.factor, &impl.common);
         if (impl.modified == nullptr)
           return false;
+        // From here on the copy serves the solves, and the next
+        // factorise() writes new values: the analysed factor keeps only its
+        // structure, so that the conversion below does not hold three
+        // factors at once (the run's peak memory on the largest walls).
+        cholmod_change_factor(CHOLMOD_PATTERN,
+                              impl.factor->is_ll,
+                              impl.factor->is_super,
+                              true,
+                              true,
+                              impl.factor,
+                              &impl.common);
         // Simplicial LDL', columns not packed so that they can grow.
         if (!cholmod_change_factor(CHOLMOD_REAL,
                                    false,
@@ -446,6 +523,7 @@ namespace unilateral::lcp
                                    &impl.common))
           {
             cholmod_free_factor(&impl.modified, &impl.common);
+            impl.factor_valid = false;
             return false;
           }
       }
@@ -583,6 +661,33 @@ namespace unilateral::lcp
           permuted_source[e] = by_row[at];
         }
     return true;
+  }
+
+  /**
+   * The values of the permuted triangle built by build_permuted: A's, or
+   * those @p fixed gives A's entries, found at the original row and column
+   * of each entry (the ordering maps the permuted ones back).
+   */
+  void
+  SparseCholesky::Implementation::fill_permuted(const SparseMatrix &A,
+                                                const FixedIndices *fixed)
+  {
+    double *const       value  = static_cast<double *>(permuted->x);
+    const double *const source = A.valuePtr();
+    if (fixed == nullptr)
+      {
+        for (std::size_t e = 0; e < permuted_source.size(); ++e)
+          value[e] = source[permuted_source[e]];
+        return;
+      }
+    const auto *const original     = static_cast<const Index *>(factor->Perm);
+    const auto *const column_start = static_cast<const Index *>(permuted->p);
+    const auto *const row          = static_cast<const Index *>(permuted->i);
+    for (std::size_t c = 0; c < permuted->ncol; ++c)
+      for (Index e = column_start[c]; e < column_start[c + 1]; ++e)
+        value[e] = fixed->value(original[row[e]],
+                                original[c],
+                                source[permuted_source[e]]);
   }
 
   /**

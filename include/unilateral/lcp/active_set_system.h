@@ -247,8 +247,6 @@ namespace unilateral::lcp
 
     const SparseMatrix &A;
     Counters           &counters;
-    /// The full pattern with fixed rows/columns diagonal, or A_FF.
-    SparseMatrix reduced;
     /// AMD ordering of A (new-to-old), computed on first need.
     std::vector<Index>                     full_ordering;
     std::shared_ptr<ActiveSetFactor>       own;

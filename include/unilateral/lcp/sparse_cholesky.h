@@ -62,6 +62,26 @@ namespace unilateral::lcp
               const std::vector<Index> &ordering,
               Counters                 &counters);
 
+    /**
+     * Numeric factorisation of the full-pattern system of an active-set
+     * method: A with the rows and columns of the indices marked in
+     * @p fixed replaced by those of a diagonal matrix (@p fixed_diagonal
+     * there), and @p shift added to the rest of the diagonal; delete_row
+     * and add_row then move single indices between the two kinds. Analysed
+     * on A's pattern, which every active set shares, and formed straight in
+     * the permuted triangle CHOLMOD factorises: no copy of A is made (on the
+     * largest walls the copy and CHOLMOD's permuted copy of it set the run's
+     * peak memory, benchmarks/masonry_tables/README.md, "Design
+     * measurements").
+     */
+    bool
+    factorise_with_fixed(const SparseMatrix       &A,
+                         const std::vector<char>  &fixed,
+                         const Vector             &fixed_diagonal,
+                         double                    shift,
+                         const std::vector<Index> &ordering,
+                         Counters                 &counters);
+
     /// The fill-reducing ordering of the last analysis (new-to-old).
     std::vector<Index>
     ordering() const;
@@ -121,7 +141,8 @@ namespace unilateral::lcp
      * rather than recomputed: the active-set methods change a few rows per
      * iteration. The first modification after a numeric factorisation works
      * on a simplicial LDL' copy of the factor; the analysed (supernodal)
-     * factor stays for the next factorise(). Indices are those of the
+     * factor keeps its structure, not its values, for the next
+     * factorise(). Indices are those of the
      * matrix, not of the fill-reducing ordering. Each returns false if
      * CHOLMOD fails (the factor is then unusable until factorise()).
      */
@@ -214,6 +235,14 @@ namespace unilateral::lcp
 
   private:
     struct Implementation;
+    struct FixedIndices;
+
+    /// factorise() of A, or of A with @p fixed applied (null: A itself).
+    bool
+    factorise(const SparseMatrix       &A,
+              const std::vector<Index> &ordering,
+              const FixedIndices       *fixed,
+              Counters                 &counters);
 
     /// The working copy for modifications, made on first need; false if
     /// there is no valid factor or CHOLMOD fails.
