@@ -6,9 +6,9 @@ namespace unilateral::lcp
   ShiftedSystem::ShiftedSystem(const SparseMatrix &A, Counters &counters)
     : A(A)
     , counters(counters)
-    , shifted(A)
-    , diagonal_position(diagonal_positions(A))
   {
+    // The shift goes to A's stored diagonal entries: all must be there.
+    diagonal_positions(A);
     // One analysis serves every iteration: worth a second ordering where
     // AMD's is poor.
     cholesky.try_nested_dissection = true;
@@ -17,10 +17,7 @@ namespace unilateral::lcp
   bool
   ShiftedSystem::factorise(const Vector &shift)
   {
-    for (Index j = 0; j < A.rows(); ++j)
-      shifted.valuePtr()[diagonal_position[j]] =
-        A.valuePtr()[diagonal_position[j]] + shift[j];
-    return cholesky.factorise(shifted, counters);
+    return cholesky.factorise_shifted(A, shift, counters);
   }
 
   void

@@ -209,7 +209,7 @@ namespace unilateral::lcp
     build_permuted(const SparseMatrix &A);
 
     void
-    fill_permuted(const SparseMatrix &A, const FixedIndices *fixed);
+    fill_permuted(const SparseMatrix &A, const Changes *changes);
 
     bool
     row_pattern(Index position, const std::vector<Index> &column_rows);
@@ -230,20 +230,25 @@ namespace unilateral::lcp
     }
   };
 
-  /// The fixed indices of factorise_with_fixed and what they do to A.
-  struct SparseCholesky::FixedIndices
+  /// What factorise_with_fixed and factorise_shifted do to A's entries.
+  struct SparseCholesky::Changes
   {
-    const std::vector<char> &fixed;
-    const Vector            &diagonal;
-    const double             shift;
+    /// Rows and columns made those of a diagonal matrix (null: none).
+    const std::vector<char> *fixed          = nullptr;
+    const Vector            *fixed_diagonal = nullptr;
+    /// Added to the diagonal of the other rows (null: nothing).
+    const Vector *shifts = nullptr;
+    double        shift  = 0;
 
     /// Entry (i, j) of the factorised matrix, @p a that of A.
     double
     value(const Index i, const Index j, const double a) const
     {
-      if (fixed[i] || fixed[j])
-        return i == j ? diagonal[i] : 0.0;
-      return i == j ? a + shift : a;
+      if (fixed != nullptr && ((*fixed)[i] || (*fixed)[j]))
+        return i == j ? (*fixed_diagonal)[i] : 0.0;
+      if (i != j)
+        return a;
+      return a + shift + (shifts != nullptr ? (*shifts)[i] : 0.0);
     }
 
     /// The factorised matrix as a copy of A (both triangles).
@@ -391,14 +396,27 @@ namespace unilateral::lcp
                                        const std::vector<Index> &ordering,
                                        Counters                 &counters)
   {
-    const FixedIndices fixed_indices{fixed, fixed_diagonal, shift};
-    return factorise(A, ordering, &fixed_indices, counters);
+    Changes changes;
+    changes.fixed          = &fixed;
+    changes.fixed_diagonal = &fixed_diagonal;
+    changes.shift          = shift;
+    return factorise(A, ordering, &changes, counters);
+  }
+
+  bool
+  SparseCholesky::factorise_shifted(const SparseMatrix &A,
+                                    const Vector       &shift,
+                                    Counters           &counters)
+  {
+    Changes changes;
+    changes.shifts = &shift;
+    return factorise(A, {}, &changes, counters);
   }
 
   bool
   SparseCholesky::factorise(const SparseMatrix       &A,
                             const std::vector<Index> &ordering,
-                            const FixedIndices       *fixed,
+                            const Changes            *changes,
                             Counters                 &counters)
   {
     if (!A.isCompressed())
@@ -410,9 +428,9 @@ namespace unilateral::lcp
     openmp::run_regions_serially();
     if (impl.distributed) // MUMPS orders the matrix itself
       {
-        if (fixed != nullptr)
+        if (changes != nullptr)
           return impl.factor_valid =
-                   impl.distributed->factorise(fixed->applied_to(A),
+                   impl.distributed->factorise(changes->applied_to(A),
                                                minimum_rcond,
                                                counters);
         return impl.factor_valid =
@@ -440,20 +458,20 @@ namespace unilateral::lcp
     impl.modification_flops = 0;
     // A pattern factorised again (the full pattern for every active set,
     // the interior point's matrix in every iteration) is permuted once, and
-    // so is A with fixed indices, which is never copied; a pattern used
-    // once (A_FF of one active set) is left to CHOLMOD.
+    // so is A with changes, which is never copied; a pattern used once
+    // (A_FF of one active set) is left to CHOLMOD.
     if (impl.factor->is_super &&
-        (impl.factorisations_of_pattern > 0 || fixed != nullptr) &&
+        (impl.factorisations_of_pattern > 0 || changes != nullptr) &&
         (impl.permuted != nullptr || impl.build_permuted(A)))
       {
-        impl.fill_permuted(A, fixed);
+        impl.fill_permuted(A, changes);
         double zero[2] = {0, 0};
         cholmod_super_numeric(
           impl.permuted, nullptr, zero, impl.factor, &impl.common);
       }
-    else if (fixed != nullptr) // a simplicial factor, or no room to permute
+    else if (changes != nullptr) // a simplicial factor, or no room to permute
       {
-        const SparseMatrix applied = fixed->applied_to(A);
+        const SparseMatrix applied = changes->applied_to(A);
         cholmod_sparse     matrix  = Implementation::view(applied);
         cholmod_factorize(&matrix, impl.factor, &impl.common);
       }
@@ -665,16 +683,16 @@ namespace unilateral::lcp
 
   /**
    * The values of the permuted triangle built by build_permuted: A's, or
-   * those @p fixed gives A's entries, found at the original row and column
-   * of each entry (the ordering maps the permuted ones back).
+   * A's with @p changes made, found at the original row and column of each
+   * entry (the ordering maps the permuted ones back).
    */
   void
   SparseCholesky::Implementation::fill_permuted(const SparseMatrix &A,
-                                                const FixedIndices *fixed)
+                                                const Changes      *changes)
   {
     double *const       value  = static_cast<double *>(permuted->x);
     const double *const source = A.valuePtr();
-    if (fixed == nullptr)
+    if (changes == nullptr)
       {
         for (std::size_t e = 0; e < permuted_source.size(); ++e)
           value[e] = source[permuted_source[e]];
@@ -685,9 +703,9 @@ namespace unilateral::lcp
     const auto *const row          = static_cast<const Index *>(permuted->i);
     for (std::size_t c = 0; c < permuted->ncol; ++c)
       for (Index e = column_start[c]; e < column_start[c + 1]; ++e)
-        value[e] = fixed->value(original[row[e]],
-                                original[c],
-                                source[permuted_source[e]]);
+        value[e] = changes->value(original[row[e]],
+                                  original[c],
+                                  source[permuted_source[e]]);
   }
 
   /**

@@ -34,8 +34,6 @@ namespace unilateral::lcp
   private:
     const SparseMatrix &A;
     Counters           &counters;
-    SparseMatrix        shifted;
-    std::vector<Index>  diagonal_position; ///< index into the value array
     SparseCholesky      cholesky;
   };
 } // namespace unilateral::lcp

@@ -82,6 +82,17 @@ namespace unilateral::lcp
                          const std::vector<Index> &ordering,
                          Counters                 &counters);
 
+    /**
+     * Numeric factorisation of A + diag(@p shift), the Newton matrix of an
+     * interior-point iteration, formed as factorise_with_fixed forms its
+     * matrix: straight from A, without a copy of it. A stores every
+     * diagonal entry (a Problem's A does).
+     */
+    bool
+    factorise_shifted(const SparseMatrix &A,
+                      const Vector       &shift,
+                      Counters           &counters);
+
     /// The fill-reducing ordering of the last analysis (new-to-old).
     std::vector<Index>
     ordering() const;
@@ -235,13 +246,13 @@ namespace unilateral::lcp
 
   private:
     struct Implementation;
-    struct FixedIndices;
+    struct Changes;
 
-    /// factorise() of A, or of A with @p fixed applied (null: A itself).
+    /// factorise() of A, or of A with @p changes made (null: A itself).
     bool
     factorise(const SparseMatrix       &A,
               const std::vector<Index> &ordering,
-              const FixedIndices       *fixed,
+              const Changes            *changes,
               Counters                 &counters);
 
     /// The working copy for modifications, made on first need; false if
