@@ -523,7 +523,8 @@ namespace unilateral::lcp
         // From here on the copy serves the solves, and the next
         // factorise() writes new values: the analysed factor keeps only its
         // structure, so that the conversion below does not hold three
-        // factors at once (the run's peak memory on the largest walls).
+        // factors at once (the run's peak memory on the largest walls). It
+        // only frees; should it fail, the values merely stay.
         cholmod_change_factor(CHOLMOD_PATTERN,
                               impl.factor->is_ll,
                               impl.factor->is_super,

@@ -152,10 +152,10 @@ namespace unilateral::lcp
      * rather than recomputed: the active-set methods change a few rows per
      * iteration. The first modification after a numeric factorisation works
      * on a simplicial LDL' copy of the factor; the analysed (supernodal)
-     * factor keeps its structure, not its values, for the next
-     * factorise(). Indices are those of the
-     * matrix, not of the fill-reducing ordering. Each returns false if
-     * CHOLMOD fails (the factor is then unusable until factorise()).
+     * factor keeps its structure, not its values, for the next factorise().
+     * Indices are those of the matrix, not of the fill-reducing ordering.
+     * Each returns false if CHOLMOD fails (the factor is then unusable until
+     * factorise()).
      */
     /// @{
     ///
