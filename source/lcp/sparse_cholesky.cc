@@ -521,17 +521,20 @@ namespace unilateral::lcp
         if (impl.modified == nullptr)
           return false;
         // From here on the copy serves the solves, and the next
-        // factorise() writes new values: the analysed factor keeps only its
+        // factorise() writes new values: a supernodal factor keeps only its
         // structure, so that the conversion below does not hold three
         // factors at once (the run's peak memory on the largest walls). It
-        // only frees; should it fail, the values merely stay.
-        cholmod_change_factor(CHOLMOD_PATTERN,
-                              impl.factor->is_ll,
-                              impl.factor->is_super,
-                              true,
-                              true,
-                              impl.factor,
-                              &impl.common);
+        // only frees; should it fail, the values merely stay. (A simplicial
+        // factor, small, keeps them: dropping its values would drop the
+        // columns compute_path_entries reads too.)
+        if (impl.factor->is_super)
+          cholmod_change_factor(CHOLMOD_PATTERN,
+                                impl.factor->is_ll,
+                                true,
+                                true,
+                                true,
+                                impl.factor,
+                                &impl.common);
         // Simplicial LDL', columns not packed so that they can grow.
         if (!cholmod_change_factor(CHOLMOD_REAL,
                                    false,
