@@ -426,16 +426,18 @@ namespace unilateral::lcp
     // (openmp::run_regions_serially says why; a setting of the thread's);
     // the dense kernels keep BLAS's own threads.
     openmp::run_regions_serially();
+    // The factorised matrix as a whole, where it must be given so: to MUMPS,
+    // or to CHOLMOD for a simplicial factor (or with no room to permute).
+    SparseMatrix applied;
+    const auto   whole = [&]() -> const SparseMatrix   &{
+      if (changes == nullptr)
+        return A;
+      applied = changes->applied_to(A);
+      return applied;
+    };
     if (impl.distributed) // MUMPS orders the matrix itself
-      {
-        if (changes != nullptr)
-          return impl.factor_valid =
-                   impl.distributed->factorise(changes->applied_to(A),
-                                               minimum_rcond,
-                                               counters);
-        return impl.factor_valid =
-                 impl.distributed->factorise(A, minimum_rcond, counters);
-      }
+      return impl.factor_valid =
+               impl.distributed->factorise(whole(), minimum_rcond, counters);
     if (A.rows() == 0) // nothing to factorise (CHOLMOD rejects 0 x 0)
       {
         impl.factor_valid = true;
@@ -469,15 +471,9 @@ namespace unilateral::lcp
         cholmod_super_numeric(
           impl.permuted, nullptr, zero, impl.factor, &impl.common);
       }
-    else if (changes != nullptr) // a simplicial factor, or no room to permute
-      {
-        const SparseMatrix applied = changes->applied_to(A);
-        cholmod_sparse     matrix  = Implementation::view(applied);
-        cholmod_factorize(&matrix, impl.factor, &impl.common);
-      }
     else
       {
-        cholmod_sparse matrix = Implementation::view(A);
+        cholmod_sparse matrix = Implementation::view(whole());
         cholmod_factorize(&matrix, impl.factor, &impl.common);
       }
     ++impl.factorisations_of_pattern;
