@@ -1,7 +1,9 @@
+#include <unilateral/base/blas_threads.h>
 #include <unilateral/base/memory.h>
 #include <unilateral/base/openmp_regions.h>
 #include <unilateral/lcp/distributed_cholesky.h>
 #include <unilateral/lcp/sparse_cholesky.h>
+#include <unilateral/lcp/supernodal_factorisation.h>
 
 #include <cholmod.h>
 
@@ -58,6 +60,8 @@ namespace unilateral::lcp
     std::vector<Index> row_pattern_positions;
     double             analysis_flops     = 0;
     double             modification_flops = 0;
+    // The analysed factor's subtrees for two threads.
+    SupernodalFactorisation subtrees;
     // Fingerprint of the analysed pattern (size, nonzeros, hash).
     Index         pattern_size     = -1;
     Index         pattern_nonzeros = -1;
@@ -125,6 +129,17 @@ namespace unilateral::lcp
                           " unknowns");
       throw std::runtime_error("CHOLMOD " + step + " failed (status " +
                                std::to_string(common.status) + ")");
+    }
+
+    /// Whether the analysed factor is factorised and solved with on two
+    /// threads: where it is split and OpenBLAS may run two (not on ranks
+    /// sharing a machine, nor under an address-space limit: blas_threads.h,
+    /// start_up.h).
+    bool
+    on_two_threads() const
+    {
+      return factor != nullptr && factor->is_super && subtrees.splits() &&
+             blas::threads() >= 2;
     }
 
     // The factor solves and modifications use.
@@ -203,6 +218,7 @@ namespace unilateral::lcp
             std::uint64_t             hash,
             bool                      relaxed_supernodes,
             double                    nested_dissection_fronts,
+            double                    minimum_flops_for_two_threads,
             Counters                 &counters);
 
     bool
@@ -297,12 +313,14 @@ namespace unilateral::lcp
    * analysed pattern.
    */
   void
-  SparseCholesky::Implementation::analyse(const SparseMatrix       &A,
-                                          const std::vector<Index> &ordering,
-                                          const std::uint64_t       hash,
-                                          const bool   relaxed_supernodes,
-                                          const double nested_dissection_fronts,
-                                          Counters    &counters)
+  SparseCholesky::Implementation::analyse(
+    const SparseMatrix       &A,
+    const std::vector<Index> &ordering,
+    const std::uint64_t       hash,
+    const bool                relaxed_supernodes,
+    const double              nested_dissection_fronts,
+    const double              minimum_flops_for_two_threads,
+    Counters                 &counters)
   {
     cholmod_sparse matrix = view(A);
     if (factor != nullptr)
@@ -361,6 +379,7 @@ namespace unilateral::lcp
         cholmod_free_factor(&factor, &common);
         throw;
       }
+    subtrees.plan(*factor, minimum_flops_for_two_threads);
     pattern_size     = A.rows();
     pattern_nonzeros = A.nonZeros();
     pattern_hash     = hash;
@@ -453,6 +472,7 @@ namespace unilateral::lcp
                    hash,
                    relaxed_supernodes,
                    try_nested_dissection ? nested_dissection_fronts : -1.0,
+                   minimum_flops_for_two_threads,
                    counters);
 
     if (impl.modified != nullptr)
@@ -460,16 +480,24 @@ namespace unilateral::lcp
     impl.modification_flops = 0;
     // A pattern factorised again (the full pattern for every active set,
     // the interior point's matrix in every iteration) is permuted once, and
-    // so is A with changes, which is never copied; a pattern used once
-    // (A_FF of one active set) is left to CHOLMOD.
+    // so is A with changes, which is never copied, and a factor split
+    // between two threads; a pattern used once (A_FF of one active set) is
+    // otherwise left to CHOLMOD.
+    const bool two_threads = impl.on_two_threads();
     if (impl.factor->is_super &&
-        (impl.factorisations_of_pattern > 0 || changes != nullptr) &&
+        (impl.factorisations_of_pattern > 0 || changes != nullptr ||
+         two_threads) &&
         (impl.permuted != nullptr || impl.build_permuted(A)))
       {
         impl.fill_permuted(A, changes);
-        double zero[2] = {0, 0};
-        cholmod_super_numeric(
-          impl.permuted, nullptr, zero, impl.factor, &impl.common);
+        if (two_threads)
+          impl.subtrees.numeric(*impl.permuted, *impl.factor, impl.common);
+        else
+          {
+            double zero[2] = {0, 0};
+            cholmod_super_numeric(
+              impl.permuted, nullptr, zero, impl.factor, &impl.common);
+          }
       }
     else
       {
@@ -1180,6 +1208,14 @@ namespace unilateral::lcp
     if (B.rows() == 0)
       {
         X.resize(0, B.cols());
+        return;
+      }
+    // One right-hand side: the substitutions on two threads where the
+    // factorisation runs on two.
+    if (B.cols() == 1 && impl.current() == impl.factor && impl.on_two_threads())
+      {
+        X.resize(B.rows(), 1);
+        impl.subtrees.solve(*impl.factor, B.data(), X.data());
         return;
       }
     cholmod_dense rhs{};

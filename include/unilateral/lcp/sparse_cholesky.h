@@ -244,6 +244,11 @@ namespace unilateral::lcp
     /// near the end by design, and harmlessly.
     double minimum_rcond = 0;
 
+    /// A supernodal factorisation of at least this many flops runs its
+    /// independent subtrees on two threads (SupernodalFactorisation), where
+    /// OpenBLAS may run two; below it a thread does not pay.
+    double minimum_flops_for_two_threads = 2e8;
+
   private:
     struct Implementation;
     struct Changes;
