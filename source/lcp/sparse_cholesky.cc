@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 namespace unilateral::lcp
 {
@@ -60,7 +61,7 @@ namespace unilateral::lcp
     std::vector<Index> row_pattern_positions;
     double             analysis_flops     = 0;
     double             modification_flops = 0;
-    // The analysed factor's subtrees for two threads.
+    // The analysed factor's subtrees for several threads.
     SupernodalFactorisation subtrees;
     // Fingerprint of the analysed pattern (size, nonzeros, hash).
     Index         pattern_size     = -1;
@@ -131,15 +132,24 @@ namespace unilateral::lcp
                                std::to_string(common.status) + ")");
     }
 
-    /// Whether the analysed factor is factorised and solved with on two
-    /// threads: where it is split and OpenBLAS may run two (not on ranks
-    /// sharing a machine, nor under an address-space limit: blas_threads.h,
-    /// start_up.h).
+    /// The threads a factorisation may run on: as many as OpenBLAS may
+    /// (one on ranks sharing a machine, or under an address-space limit:
+    /// blas_threads.h, start_up.h), at most the cores.
+    static unsigned int
+    factorisation_threads()
+    {
+      return std::min<unsigned int>(std::max(blas::threads(), 1),
+                                    std::thread::hardware_concurrency());
+    }
+
+    /// Whether the analysed factor is factorised and solved with on
+    /// several threads: where it is split and OpenBLAS may still run more
+    /// than one.
     bool
-    on_two_threads() const
+    on_several_threads() const
     {
       return factor != nullptr && factor->is_super && subtrees.splits() &&
-             blas::threads() >= 2;
+             factorisation_threads() >= 2;
     }
 
     // The factor solves and modifications use.
@@ -218,7 +228,7 @@ namespace unilateral::lcp
             std::uint64_t             hash,
             bool                      relaxed_supernodes,
             double                    nested_dissection_fronts,
-            double                    minimum_flops_for_two_threads,
+            double                    minimum_flops_for_threads,
             Counters                 &counters);
 
     bool
@@ -319,7 +329,7 @@ namespace unilateral::lcp
     const std::uint64_t       hash,
     const bool                relaxed_supernodes,
     const double              nested_dissection_fronts,
-    const double              minimum_flops_for_two_threads,
+    const double              minimum_flops_for_threads,
     Counters                 &counters)
   {
     cholmod_sparse matrix = view(A);
@@ -379,7 +389,7 @@ namespace unilateral::lcp
         cholmod_free_factor(&factor, &common);
         throw;
       }
-    subtrees.plan(*factor, minimum_flops_for_two_threads);
+    subtrees.plan(*factor, minimum_flops_for_threads, factorisation_threads());
     pattern_size     = A.rows();
     pattern_nonzeros = A.nonZeros();
     pattern_hash     = hash;
@@ -472,7 +482,7 @@ namespace unilateral::lcp
                    hash,
                    relaxed_supernodes,
                    try_nested_dissection ? nested_dissection_fronts : -1.0,
-                   minimum_flops_for_two_threads,
+                   minimum_flops_for_threads,
                    counters);
 
     if (impl.modified != nullptr)
@@ -481,16 +491,16 @@ namespace unilateral::lcp
     // A pattern factorised again (the full pattern for every active set,
     // the interior point's matrix in every iteration) is permuted once, and
     // so is A with changes, which is never copied, and a factor split
-    // between two threads; a pattern used once (A_FF of one active set) is
+    // between threads; a pattern used once (A_FF of one active set) is
     // otherwise left to CHOLMOD.
-    const bool two_threads = impl.on_two_threads();
+    const bool on_threads = impl.on_several_threads();
     if (impl.factor->is_super &&
         (impl.factorisations_of_pattern > 0 || changes != nullptr ||
-         two_threads) &&
+         on_threads) &&
         (impl.permuted != nullptr || impl.build_permuted(A)))
       {
         impl.fill_permuted(A, changes);
-        if (two_threads)
+        if (on_threads)
           impl.subtrees.numeric(*impl.permuted, *impl.factor, impl.common);
         else
           {
@@ -1210,9 +1220,10 @@ namespace unilateral::lcp
         X.resize(0, B.cols());
         return;
       }
-    // One right-hand side: the substitutions on two threads where the
-    // factorisation runs on two.
-    if (B.cols() == 1 && impl.current() == impl.factor && impl.on_two_threads())
+    // One right-hand side: the substitutions on the factorisation's
+    // threads.
+    if (B.cols() == 1 && impl.current() == impl.factor &&
+        impl.on_several_threads())
       {
         X.resize(B.rows(), 1);
         impl.subtrees.solve(*impl.factor, B.data(), X.data());

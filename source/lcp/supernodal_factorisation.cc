@@ -110,27 +110,28 @@ namespace unilateral::lcp
       return most;
     }
 
-    /// Run @p first and @p second at the same time, on this thread and on
-    /// another, each with one BLAS thread; one after the other on this
-    /// thread if no thread can be started.
-    template <typename First, typename Second>
+    /// Run task(t) for t = 0, ..., n - 1 at the same time, task(0) on this
+    /// thread, each with one BLAS thread; those no thread can be started
+    /// for run on this thread after its own.
+    template <typename Task>
     void
-    on_two_threads(const First &first, const Second &second)
+    on_threads(const unsigned int n, const Task &task)
     {
-      blas::ScopedThreads one_blas_thread(1);
-      std::thread         other;
+      blas::ScopedThreads      one_blas_thread(1);
+      std::vector<std::thread> others;
+      unsigned int             started = 1;
       try
         {
-          other = std::thread(second);
+          for (; started < n; ++started)
+            others.emplace_back(task, started);
         }
       catch (const std::system_error &)
-        {
-          first();
-          second();
-          return;
-        }
-      first();
-      other.join();
+        {}
+      task(0);
+      for (unsigned int t = started; t < n; ++t)
+        task(t);
+      for (auto &other : others)
+        other.join();
     }
 
     /**
@@ -404,22 +405,24 @@ namespace unilateral::lcp
       bool                            postordered = false;
     };
 
-    /// Two shares of whole subtrees (their roots) and the supernodes above
-    /// them, with the time they take: the larger share plus the rest.
+    /// Shares of whole subtrees (their roots), one per thread, and the
+    /// supernodes above them, with the time they take: the largest share
+    /// plus the rest.
     struct Split
     {
-      std::vector<Index> share[2];
-      std::vector<char>  above;
-      double             time;
+      std::vector<std::vector<Index>> share;
+      std::vector<char>               above;
+      double                          time;
     };
 
     /**
      * Open the largest subtree into its children (its root then runs after
-     * the threads) while that lowers the time of the split, the subtrees
-     * dealt largest first into the lighter share; at most 256 openings.
+     * the threads) while that lowers the time of the split into
+     * @p n_threads shares, the subtrees dealt largest first into the
+     * lightest share; at most 256 openings.
      */
     Split
-    choose_split(const EliminationTree &tree)
+    choose_split(const EliminationTree &tree, const unsigned int n_threads)
     {
       std::vector<Index> candidates = tree.roots;
       std::vector<char>  above(tree.parent.size(), 0);
@@ -433,15 +436,19 @@ namespace unilateral::lcp
                     [&](const Index a, const Index b) {
                       return tree.subtree_work[a] > tree.subtree_work[b];
                     });
-          Split  split;
-          double share_work[2] = {0, 0};
+          Split               split;
+          std::vector<double> share_work(n_threads, 0.0);
+          split.share.resize(n_threads);
           for (const Index c : candidates)
             {
-              const int lighter = share_work[1] < share_work[0];
-              share_work[lighter] += tree.subtree_work[c];
-              split.share[lighter].push_back(c);
+              const auto lightest =
+                std::min_element(share_work.begin(), share_work.end()) -
+                share_work.begin();
+              share_work[lightest] += tree.subtree_work[c];
+              split.share[lightest].push_back(c);
             }
-          split.time = std::max(share_work[0], share_work[1]) + above_work;
+          split.time = *std::max_element(share_work.begin(), share_work.end()) +
+                       above_work;
           if (split.time < best.time)
             {
               split.above = above;
@@ -467,15 +474,15 @@ namespace unilateral::lcp
 
   void
   SupernodalFactorisation::plan(const cholmod_factor &L,
-                                const double          minimum_flops)
+                                const double          minimum_flops,
+                                const unsigned int    n_threads)
   {
     supernode_of_column.clear();
-    subtrees[0].clear();
-    subtrees[1].clear();
+    shares.clear();
     ancestors.clear();
     place_among_ancestors.clear();
     n_ancestor_columns = 0;
-    if (!L.is_super || L.nsuper < 2)
+    if (!L.is_super || L.nsuper < 2 || n_threads < 2)
       return;
     const auto  n_super = static_cast<Index>(L.nsuper);
     const auto *super   = static_cast<const Index *>(L.super);
@@ -491,15 +498,19 @@ namespace unilateral::lcp
         supernode_of_column.clear();
         return;
       }
-    const Split split = choose_split(tree);
-    if (split.time > 0.9 * tree.total_work || split.share[1].empty())
+    const Split split = choose_split(tree, n_threads);
+    if (split.time > 0.9 * tree.total_work)
       {
         supernode_of_column.clear();
         return;
       }
-    for (unsigned int t = 0; t < 2; ++t)
-      for (const Index c : split.share[t])
-        subtrees[t].emplace_back(tree.first[c], c);
+    for (const auto &share : split.share)
+      if (!share.empty())
+        {
+          shares.emplace_back();
+          for (const Index c : share)
+            shares.back().emplace_back(tree.first[c], c);
+        }
     place_among_ancestors.assign(L.n, -1);
     for (Index s = 0; s < n_super; ++s)
       if (split.above[s])
@@ -513,7 +524,7 @@ namespace unilateral::lcp
   bool
   SupernodalFactorisation::splits() const
   {
-    return !subtrees[1].empty();
+    return shares.size() >= 2;
   }
 
   void
@@ -528,33 +539,32 @@ namespace unilateral::lcp
     L.is_ll = 1;
     try
       {
-        std::vector<Index> position(L.nsuper, 0), next(L.nsuper, -1);
-        std::atomic<bool>  stop{false};
-        Worker main_thread(A, L, supernode_of_column, position, next, stop);
-        Worker second_thread(A, L, supernode_of_column, position, next, stop);
-        const auto run =
-          [&stop](Worker                                     &w,
-                  const std::vector<std::pair<Index, Index>> &ranges) {
-            for (const auto &[first, last] : ranges)
-              if (!w.factorise(first, last))
-                {
-                  stop = true;
-                  return;
-                }
-          };
-        on_two_threads([&]() { run(main_thread, subtrees[0]); },
-                       [&]() { run(second_thread, subtrees[1]); });
+        std::vector<Index>  position(L.nsuper, 0), next(L.nsuper, -1);
+        std::atomic<bool>   stop{false};
+        std::vector<Worker> workers;
+        workers.reserve(shares.size());
+        for (std::size_t t = 0; t < shares.size(); ++t)
+          workers.emplace_back(A, L, supernode_of_column, position, next, stop);
+        on_threads(shares.size(), [&](const unsigned int t) {
+          for (const auto &[first, last] : shares[t])
+            if (!workers[t].factorise(first, last))
+              {
+                stop = true;
+                return;
+              }
+        });
         if (!stop)
           for (const Index s : ancestors)
             {
-              main_thread.adopt_waiting(second_thread, s);
-              if (!main_thread.factorise(s))
+              for (std::size_t t = 1; t < workers.size(); ++t)
+                workers[0].adopt_waiting(workers[t], s);
+              if (!workers[0].factorise(s))
                 break;
             }
         Index failed = L.n;
-        for (const Worker *w : {&main_thread, &second_thread})
-          if (w->failed_column >= 0)
-            failed = std::min(failed, w->failed_column);
+        for (const Worker &w : workers)
+          if (w.failed_column >= 0)
+            failed = std::min(failed, w.failed_column);
         L.minor = failed;
         if (failed < static_cast<Index>(L.n))
           common.status = CHOLMOD_NOT_POSDEF;
@@ -570,7 +580,7 @@ namespace unilateral::lcp
     /**
      * Substitution with the supernodes of a factor: forward (L y = b) adds
      * each supernode's updates of the rows below it into y, or, for the
-     * rows of common ancestors while two threads run, into the thread's own
+     * rows of common ancestors while the threads run, into the thread's own
      * updates (summed into y before the ancestors are substituted);
      * backward (L' x = y) reads only rows below, already final.
      */
@@ -672,39 +682,28 @@ namespace unilateral::lcp
     std::vector<double> y(n);
     for (Index k = 0; k < n; ++k)
       y[k] = b[perm[k]];
-    Substitution main_thread(L, y, &place_among_ancestors, n_ancestor_columns);
-    Substitution second_thread(L,
-                               y,
-                               &place_among_ancestors,
-                               n_ancestor_columns);
-    const auto   in_subtrees =
-      [](Substitution                               &thread,
-         const std::vector<std::pair<Index, Index>> &ranges,
-         const bool                                  forward) {
-        for (const auto &[first, last] : ranges)
+    std::vector<Substitution> threads;
+    threads.reserve(shares.size());
+    for (std::size_t t = 0; t < shares.size(); ++t)
+      threads.emplace_back(L, y, &place_among_ancestors, n_ancestor_columns);
+    const auto substitute_subtrees = [&](const bool forward) {
+      on_threads(shares.size(), [&](const unsigned int t) {
+        for (const auto &[first, last] : shares[t])
           if (forward)
             for (Index s = first; s <= last; ++s)
-              thread.forward(s);
+              threads[t].forward(s);
           else
             for (Index s = last; s >= first; --s)
-              thread.backward(s);
-      };
-    const auto substitute_subtrees = [&](const bool forward) {
-      on_two_threads([&]() { in_subtrees(main_thread, subtrees[0], forward); },
-                     [&]() {
-                       in_subtrees(second_thread, subtrees[1], forward);
-                     });
+              threads[t].backward(s);
+      });
     };
 
     substitute_subtrees(true);
     const auto *super = static_cast<const Index *>(L.super);
     for (const Index s : ancestors)
       for (Index k = super[s]; k < super[s + 1]; ++k)
-        {
-          const Index a = place_among_ancestors[k];
-          y[k] += main_thread.ancestor_updates()[a] +
-                  second_thread.ancestor_updates()[a];
-        }
+        for (const Substitution &thread : threads)
+          y[k] += thread.ancestor_updates()[place_among_ancestors[k]];
     Substitution above(L, y, nullptr, 0);
     for (const Index s : ancestors)
       above.forward(s);

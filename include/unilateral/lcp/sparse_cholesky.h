@@ -245,9 +245,10 @@ namespace unilateral::lcp
     double minimum_rcond = 0;
 
     /// A supernodal factorisation of at least this many flops runs its
-    /// independent subtrees on two threads (SupernodalFactorisation), where
-    /// OpenBLAS may run two; below it a thread does not pay.
-    double minimum_flops_for_two_threads = 2e8;
+    /// independent subtrees on as many threads as OpenBLAS may run, at most
+    /// one per core (SupernodalFactorisation); below it a thread does not
+    /// pay.
+    double minimum_flops_for_threads = 2e8;
 
   private:
     struct Implementation;

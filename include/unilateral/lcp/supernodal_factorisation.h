@@ -13,8 +13,8 @@ namespace unilateral::lcp
    * CHOLMOD's numeric supernodal Cholesky factorisation
    * (cholmod_super_numeric: left-looking, each supernode gathers the updates
    * of its descendants before it is factorised), with disjoint subtrees of
-   * the supernodal elimination tree factorised on two threads at once and
-   * their common ancestors after them.
+   * the supernodal elimination tree factorised on several threads at once
+   * and their common ancestors after them.
    *
    * Why our own loop over CHOLMOD's supernodes: CHOLMOD 4 (SuiteSparse 5.12)
    * factorises on one thread and reaches a second core only through the
@@ -22,8 +22,8 @@ namespace unilateral::lcp
    * for each other; the second core then adds nothing to the factorisations
    * that take most of a large wall's time (benchmarks/masonry_tables/
    * README.md, "Design measurements"). Subtrees with no common ancestor
-   * write disjoint columns and read none of each other's, so two of them
-   * can be factorised at the same time. The steps of each supernode are
+   * write disjoint columns and read none of each other's, so they can be
+   * factorised at the same time. The steps of each supernode are
    * CHOLMOD's own (the same BLAS and LAPACK calls on the same blocks), and
    * the result is a CHOLMOD factor like any other: CHOLMOD's solves, copies
    * and row modifications take it unchanged. Only the order in which a
@@ -33,16 +33,16 @@ namespace unilateral::lcp
   {
   public:
     /**
-     * Split the analysed supernodal factor @p L between two threads: whole
-     * subtrees of its elimination tree, in two shares of about equal work,
-     * and the supernodes above them. No split (splits() false) where the
-     * factorisation costs fewer than @p minimum_flops (a thread would not
-     * pay) or a second thread would save less than a tenth of it.
+     * Split the analysed supernodal factor @p L between @p n_threads
+     * threads: whole subtrees of its elimination tree, in shares of about
+     * equal work, and the supernodes above them. No split (splits() false)
+     * where the factorisation costs fewer than @p minimum_flops (a thread
+     * would not pay) or the threads would save less than a tenth of it.
      */
     void
-    plan(const cholmod_factor &L, double minimum_flops);
+    plan(const cholmod_factor &L, double minimum_flops, unsigned int n_threads);
 
-    /// Whether plan() found a split worth a second thread.
+    /// Whether plan() found a split worth more than one thread.
     bool
     splits() const;
 
@@ -65,9 +65,9 @@ namespace unilateral::lcp
      * planned for (numeric()'s or CHOLMOD's): L's permutation, then the
      * forward and the backward substitution supernode by supernode, as
      * CHOLMOD's supernodal solve of one right-hand side does, with the
-     * subtrees of the two threads at the same time. A solve reads the
-     * whole factor once each way and is bound by memory traffic, which two
-     * cores nearly double on this machine (benchmarks/masonry_tables/
+     * subtrees of the threads at the same time. A solve reads the
+     * whole factor once each way and is bound by memory traffic, which a
+     * second core nearly doubles on this machine (benchmarks/masonry_tables/
      * README.md, "Design measurements").
      */
     void
@@ -78,7 +78,7 @@ namespace unilateral::lcp
     std::vector<Index> supernode_of_column;
     /// Each thread's subtrees, as ranges [first, last] of supernodes (the
     /// supernodes are in postorder, so a subtree is a range).
-    std::vector<std::pair<Index, Index>> subtrees[2];
+    std::vector<std::vector<std::pair<Index, Index>>> shares;
     /// The supernodes above all subtrees, in order.
     std::vector<Index> ancestors;
     /// For each column of an ancestor its place among those columns, -1
