@@ -150,7 +150,8 @@ namespace unilateral::lcp
              const std::vector<Index> &supernode_of_column,
              std::vector<Index>       &position,
              std::vector<Index>       &next,
-             const std::atomic<bool>  &stop)
+             const std::atomic<bool>  &stop,
+             const std::size_t         update_size)
         : A(A)
         , L(L)
         , supernode_of_column(supernode_of_column)
@@ -158,7 +159,7 @@ namespace unilateral::lcp
         , next(next)
         , stop(stop)
         , row_in_supernode(L.n, -1)
-        , update(L.maxcsize)
+        , update(update_size)
         , head(L.nsuper, -1)
       {
         relative_row.resize(most_rows(L));
@@ -527,6 +528,27 @@ namespace unilateral::lcp
     return shares.size() >= 2;
   }
 
+  namespace
+  {
+    /// The update buffer a thread needs for @p ranges of supernodes alone
+    /// (the first thread, which also factorises the ancestors, needs
+    /// CHOLMOD's largest, L.maxcsize): a descendant's update of a
+    /// supernode has at most its rows squared entries.
+    std::size_t
+    update_size(const cholmod_factor                       &L,
+                const std::vector<std::pair<Index, Index>> &ranges)
+    {
+      std::size_t largest = 0;
+      for (const auto &[first, last] : ranges)
+        for (Index s = first; s <= last; ++s)
+          {
+            const auto rows = static_cast<std::size_t>(Supernode(L, s).n_rows);
+            largest         = std::max(largest, rows * rows);
+          }
+      return std::min<std::size_t>(largest, L.maxcsize);
+    }
+  } // namespace
+
   void
   SupernodalFactorisation::numeric(const cholmod_sparse &A,
                                    cholmod_factor       &L,
@@ -544,7 +566,13 @@ namespace unilateral::lcp
         std::vector<Worker> workers;
         workers.reserve(shares.size());
         for (std::size_t t = 0; t < shares.size(); ++t)
-          workers.emplace_back(A, L, supernode_of_column, position, next, stop);
+          workers.emplace_back(A,
+                               L,
+                               supernode_of_column,
+                               position,
+                               next,
+                               stop,
+                               t == 0 ? L.maxcsize : update_size(L, shares[t]));
         on_threads(shares.size(), [&](const unsigned int t) {
           for (const auto &[first, last] : shares[t])
             if (!workers[t].factorise(first, last))
