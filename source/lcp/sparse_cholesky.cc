@@ -335,6 +335,10 @@ namespace unilateral::lcp
     cholmod_sparse matrix = view(A);
     if (factor != nullptr)
       cholmod_free_factor(&factor, &common);
+    // The old pattern's permuted triangle goes before the new factor's
+    // memory check, which would otherwise count it.
+    if (permuted != nullptr)
+      cholmod_free_sparse(&permuted, &common);
     set_amalgamation(relaxed_supernodes);
     if (ordering.empty())
       {
