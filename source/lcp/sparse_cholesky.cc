@@ -335,8 +335,8 @@ namespace unilateral::lcp
     cholmod_sparse matrix = view(A);
     if (factor != nullptr)
       cholmod_free_factor(&factor, &common);
-    // The old pattern's permuted triangle goes before the new factor's
-    // memory check, which would otherwise count it.
+    // The old pattern's permuted triangle goes here, before the new
+    // factor's memory check, which would otherwise count it.
     if (permuted != nullptr)
       cholmod_free_sparse(&permuted, &common);
     set_amalgamation(relaxed_supernodes);
@@ -401,8 +401,6 @@ namespace unilateral::lcp
     analysis_flops   = common.fl;
     inverse_ordering.clear(); // both computed on first need
     path_entries.clear();
-    if (permuted != nullptr)
-      cholmod_free_sparse(&permuted, &common);
     factorisations_of_pattern = 0;
     ++counters.symbolic_analyses;
   }

@@ -166,7 +166,7 @@ namespace unilateral::lcp
       }
 
       /// Factorise supernodes first to last; false where one is not
-      /// positive definite (failed_column) or the other thread failed.
+      /// positive definite (failed_column) or another thread failed.
       bool
       factorise(const Index first, const Index last)
       {
@@ -188,7 +188,7 @@ namespace unilateral::lcp
         return factorise_block(sn, s);
       }
 
-      /// Take over the other thread's waiting descendants of supernode s.
+      /// Take over another thread's waiting descendants of supernode s.
       void
       adopt_waiting(const Worker &other, const Index s)
       {
