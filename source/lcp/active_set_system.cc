@@ -126,6 +126,8 @@ namespace unilateral::lcp
     if (this->inherited &&
         this->inherited->ordering_of_A.size() == std::size_t(A.rows()))
       full_ordering = this->inherited->ordering_of_A;
+    if (this->inherited && this->inherited->analysis_only)
+      analysis_of_A = this->inherited;
     // Only a factor of this A's size can precondition (an ordering alone,
     // or a factor that failed, cannot).
     if (this->inherited &&
@@ -137,10 +139,12 @@ namespace unilateral::lcp
   }
 
   std::shared_ptr<const ActiveSetFactor>
-  ActiveSetFactor::ordering_only(std::vector<Index> ordering_of_A)
+  ActiveSetFactor::analysis_of(SparseCholesky &analysed)
   {
     auto hint           = std::make_shared<ActiveSetFactor>();
-    hint->ordering_of_A = std::move(ordering_of_A);
+    hint->ordering_of_A = analysed.ordering();
+    hint->cholesky.take_analysis_from(analysed);
+    hint->analysis_only = true;
     return hint;
   }
 
@@ -215,11 +219,30 @@ namespace unilateral::lcp
       n_fixed += f;
 
     const bool settling = active_set_settling(fixed);
+    // An analysis of A's full pattern handed over by the stage before (the
+    // interior point's Newton matrix) makes the full pattern the cheaper
+    // way for as long as it is kept: each A_FF would need a symbolic pass
+    // and a copy of its pattern, and the projection after an interior point
+    // takes a few iterations of small changes
+    // (benchmarks/masonry_tables/README.md, "Design measurements").
+    const bool take_analysis =
+      analysis_of_A != nullptr && analysis_of_A.use_count() == 1 &&
+      !own->cholesky.distributed() && !analysis_of_A->cholesky.distributed();
     // A distributed factorisation always takes the full pattern: its
     // symbolic analysis (a parallel ordering over all ranks) is then run
     // once for every active set.
     const bool full_pattern = n_fixed <= reduced_threshold * n || settling ||
-                              own->cholesky.distributed();
+                              own->cholesky.distributed() || take_analysis ||
+                              took_analysis_of_A;
+    if (take_analysis)
+      {
+        // Made non-const by its owner, held by no one else: taking its
+        // storage changes nothing anyone can see.
+        own->cholesky.take_analysis_from(
+          const_cast<ActiveSetFactor &>(*analysis_of_A).cholesky);
+        took_analysis_of_A = true;
+      }
+    analysis_of_A.reset();
     // An inherited factor of the full pattern that no one else holds (the
     // regularised solve's, handed to the projection) lends its analysis
     // and memory to ours: the same pattern, so no new analysis and no
@@ -239,7 +262,8 @@ namespace unilateral::lcp
         // scaled identity on their diagonal (the conditioning of A).
         own->reduced_index.clear();
         own->n_free = n - n_fixed;
-        // This factor may be modified row by row (modify_factor).
+        // This factor may be modified row by row (modify_factor): CHOLMOD's
+        // own supernodes, as in the interior point's analysis taken over.
         own->cholesky.relaxed_supernodes = false;
         // The one AMD ordering of A serves both ways of factorising: an
         // analysis that orders A again would repeat the ordering of the
@@ -286,7 +310,8 @@ namespace unilateral::lcp
                shift,
                !own->cholesky.distributed(),
                free_part);
-    own->cholesky.relaxed_supernodes = true; // never modified
+    own->cholesky.relaxed_supernodes = true;  // never modified
+    took_analysis_of_A               = false; // A_FF's analysis replaces it
     own_valid = own->cholesky.factorise(free_part, ordering, counters);
     if (own_valid)
       reduced_factor_flops = own->cholesky.factorisation_flops();

@@ -10,8 +10,13 @@ namespace unilateral::lcp
     // The shift goes to A's stored diagonal entries: all must be there.
     diagonal_positions(A);
     // One analysis serves every iteration: worth a second ordering where
-    // AMD's is poor.
+    // AMD's is poor. CHOLMOD's own supernodes, not relaxed ones: with the
+    // factorisation on two threads they are the faster (the walls'
+    // interior point, benchmarks/masonry_tables/README.md, "Design
+    // measurements"), and the projection that takes over this analysis
+    // modifies its factor row by row, which relaxed supernodes slow down.
     cholesky.try_nested_dissection = true;
+    cholesky.relaxed_supernodes    = false;
   }
 
   bool

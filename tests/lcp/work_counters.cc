@@ -551,6 +551,22 @@ main()
       }
   }
 
+  // Interior point and its projection (A is singular: eps = auto, then the
+  // projection on A): the projection's systems take over the interior
+  // point's analysis of A's pattern and analyse nothing themselves.
+  {
+    Vector pdas_u;
+    solve_with(problem, method("pdas"), pdas_u);
+    const Report ip = solve_with(problem, method("interior_point"), u);
+    std::cout << "interior point + projection: " << to_string(ip.status)
+              << ", projected: " << yes_no(ip.projected)
+              << "\n  one symbolic analysis in all (the projection took the "
+                 "interior point's): "
+              << yes_no(ip.counters.symbolic_analyses == 1)
+              << ", the answer of PDAS: "
+              << yes_no(relative_difference(u, pdas_u) < 1e-10) << "\n";
+  }
+
   // Interior point: one analysis of the pattern for all its Newton systems.
   {
     SolverParameters parameters;

@@ -34,14 +34,20 @@ namespace unilateral::lcp
     void
     solve(const DenseMatrix &B, DenseMatrix &X) const;
 
+    /// No factor for any X, only the symbolic analysis of A's full
+    /// pattern (see analysis_of).
+    bool analysis_only = false;
+
     /**
-     * No factor, only an ordering of A's pattern for the systems of a later
-     * stage (the projection after an interior-point method, whose matrix
-     * has A's pattern and was ordered once, in METIS's nested dissection
-     * where AMD's fronts are large).
+     * No factor, only the symbolic analysis of A's pattern and its
+     * ordering, taken from @p analysed (left empty), for the systems of a
+     * later stage: the projection after an interior-point method, whose
+     * Newton matrix has A's pattern and was analysed once (in METIS's
+     * nested dissection where AMD's fronts are large). The projection's
+     * first system then takes the full pattern in that analysis.
      */
     static std::shared_ptr<const ActiveSetFactor>
-    ordering_only(std::vector<Index> ordering_of_A);
+    analysis_of(SparseCholesky &analysed);
 
     /// G = B' K(X)^-1 B for sparse columns B that vanish on X (the Schur
     /// complement's A_FU): SparseCholesky::inverse_gram on the factored
@@ -59,7 +65,9 @@ namespace unilateral::lcp
    *
    * Two ways to factorise K(X), chosen by the size of X: with few fixed
    * indices the full pattern is kept (fixed rows and columns replaced by the
-   * diagonal), so the one symbolic analysis of A serves every active set;
+   * diagonal), so the one symbolic analysis of A serves every active set
+   * (so does the first system after a stage that analysed A's pattern and
+   * hands over that analysis: the projection after an interior point);
    * with many (more than a sixth of the unknowns, where the smaller factor
    * pays for a symbolic pass) A_FF is extracted and factorised in the AMD
    * ordering of A restricted to F, "in the ordering established in the
@@ -252,6 +260,12 @@ namespace unilateral::lcp
     std::shared_ptr<ActiveSetFactor>       own;
     bool                                   own_valid = false;
     std::shared_ptr<const ActiveSetFactor> inherited;
+    /// The analysis of A's full pattern a stage before left (an
+    /// ActiveSetFactor::analysis_of), until the first factorisation takes
+    /// it; and whether the own factor holds it (then every K(X) is
+    /// factorised in the full pattern, with no analysis of its own).
+    std::shared_ptr<const ActiveSetFactor> analysis_of_A;
+    bool                                   took_analysis_of_A = false;
     /// Diagonal used for fixed rows: A_jj if positive, else the mean diagonal.
     Vector fixed_diagonal;
     /// Flops of the latest factorisation of A_FF on its own (own or

@@ -24,11 +24,12 @@ namespace unilateral::lcp
     void
     solve(const Vector &r, Vector &x) const;
 
-    /// The fill-reducing ordering of A's pattern in use (new-to-old).
-    std::vector<Index>
-    ordering() const
+    /// The factorisation, whose analysis a later stage on A's pattern may
+    /// take over (ActiveSetFactor::analysis_of).
+    SparseCholesky &
+    factorisation()
     {
-      return cholesky.ordering();
+      return cholesky;
     }
 
   private:

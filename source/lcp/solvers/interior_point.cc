@@ -361,15 +361,15 @@ namespace unilateral::lcp
       }
 
       /// The answer: z with its slack exactly psi + gap on J1, and the
-      /// ordering of the Newton matrix for the projection's systems (they
+      /// analysis of the Newton matrix for the projection's systems (they
       /// have A's pattern).
       void
-      finish(Solution &solution) const
+      finish(Solution &solution)
       {
         solution.u = z;
         for (Index j = 0; j < n_c; ++j)
           solution.u[problem.constrained[j]] = problem.lower_bound[j] + gap[j];
-        solution.factor = ActiveSetFactor::ordering_only(newton.ordering());
+        solution.factor = ActiveSetFactor::analysis_of(newton.factorisation());
       }
 
       /**

@@ -304,7 +304,7 @@ namespace unilateral::lcp
       }
 
       /// The answer in the original variables, u consistent with the
-      /// slacks, and the ordering of the Newton matrix for the projection's
+      /// slacks, and the analysis of the Newton matrix for the projection's
       /// systems (they have A's pattern).
       void
       finish(const Vector &scale, Solution &solution)
@@ -312,7 +312,7 @@ namespace unilateral::lcp
         for (Index k = 0; k < n_c; ++k)
           u[problem.constrained[k]] = problem.lower_bound[k] + slack[k];
         solution.u      = scale.cwiseProduct(u);
-        solution.factor = ActiveSetFactor::ordering_only(newton.ordering());
+        solution.factor = ActiveSetFactor::analysis_of(newton.factorisation());
       }
 
       /// Of the last residual(): s^T lambda / n_c and ||r||_2.
