@@ -213,7 +213,9 @@ namespace unilateral::lcp
      * of the work: a faster factorisation for somewhat more memory. Factors
      * that are modified row by row keep CHOLMOD's default: the simplicial
      * copy and every update would carry the stored zeros too, and lose more
-     * than the factorisation gains (both measured on the walls:
+     * than the factorisation gains. So does the interior point's matrix
+     * (ShiftedSystem), which is factorised on two threads, where the smaller
+     * supernodes are the faster (all measured on the walls:
      * benchmarks/masonry_tables/README.md, "Design measurements").
      */
     bool relaxed_supernodes = true;
