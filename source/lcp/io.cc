@@ -56,6 +56,26 @@ namespace unilateral::lcp
              line[first] == '#';
     }
 
+    /**
+     * A data line with no newline after it, at the end of the file: a file
+     * cut short (a copy or a download that stopped) ends so, often inside
+     * its last number, which still reads as a number: a wrong entry that no
+     * other check can see. Every line of a complete file ends with a
+     * newline (so do ours), so the file is refused, with the fix.
+     */
+    void
+    refuse_unterminated(const std::istream &in,
+                        const std::string  &file_name,
+                        const unsigned int  line_number)
+    {
+      if (in.eof())
+        fail(file_name,
+             line_number,
+             "the file ends inside this line, with no newline after it: it "
+             "may have been cut short (inside its last number); if the file "
+             "is complete, end its last line with a newline");
+    }
+
     /// A line quoted in a message, cut after 60 characters.
     std::string
     clipped(const std::string &line)
@@ -131,6 +151,7 @@ namespace unilateral::lcp
                  "expected the size line 'rows columns entries' (three "
                  "whole numbers), found '" +
                    clipped(line) + "'");
+          refuse_unterminated(in, file_name, line_number);
           return size;
         }
       fail(file_name, line_number, "missing the size line");
@@ -218,6 +239,7 @@ namespace unilateral::lcp
                  " matrix (indices are 1-based)");
         if (!std::isfinite(value))
           fail(file_name, line_number, "entry is not a finite number");
+        refuse_unterminated(in, file_name, line_number);
         triplets.emplace_back(i - 1, j - 1, value);
         if (symmetric && i != j)
           triplets.emplace_back(j - 1, i - 1, value);
@@ -310,6 +332,7 @@ namespace unilateral::lcp
                    line_number,
                    "the size line announces " + std::to_string(size[1]) +
                      " columns; a vector is one column ('rows 1')");
+            refuse_unterminated(in, file_name, line_number);
             announced = size[0];
             continue;
           }
@@ -321,6 +344,7 @@ namespace unilateral::lcp
           fail(file_name, line_number, "expected one number per line");
         if (!std::isfinite(value))
           fail(file_name, line_number, "value is not a finite number");
+        refuse_unterminated(in, file_name, line_number);
         values.push_back(value);
       }
     if (announced >= 0 && static_cast<long long>(values.size()) != announced)
@@ -391,6 +415,7 @@ namespace unilateral::lcp
                line_number,
                "lower bound must be a finite number (an index without a "
                "bound is not listed)");
+        refuse_unterminated(in, file_name, line_number);
         indices.push_back(static_cast<Index>(i - 1));
         bounds.push_back(bound);
       }

@@ -158,4 +158,29 @@ main()
   expect_error("a vector with fewer values than its size line announces",
                run_with_b("b_short"),
                {"b_short.txt:2:", "announces 3 values", "holds 2"});
+
+  // Files cut short inside their last number ("2" of "2.5", "-2" of
+  // "-25") read as complete files with another last entry; only the
+  // missing newline tells.
+  write("b_cut.txt", "1\n-2");
+  expect_error("a vector cut inside its last number",
+               run_with_b("b_cut"),
+               {"b_cut.txt:2:", "cut short", "newline"});
+  write("A_cut.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n"
+        "1 1 2\n2 1 -1\n2 2 2");
+  expect_error("a matrix cut inside its last number",
+               run_lcp("matrix_cut", "A_cut.mtx", "c.txt"),
+               {"A_cut.mtx:5:", "cut short"});
+  write("c_cut.txt", "1 0\n2 0");
+  expect_error("constraints cut inside the last bound",
+               run_lcp("constraints_cut", "A.mtx", "c_cut.txt"),
+               {"c_cut.txt:2:", "cut short"});
+  // A last line of comment without a newline cuts no number.
+  write("A_comment.mtx",
+        "%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n"
+        "1 1 2\n2 1 -1\n2 2 2\n% the end");
+  std::cout << "a matrix file ending in a comment without a newline: exit "
+               "code "
+            << run_lcp("matrix_comment", "A_comment.mtx", "c.txt").code << "\n";
 }

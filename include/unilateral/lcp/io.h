@@ -15,6 +15,8 @@
  *  - constraints: text, one line "index lower_bound" per constrained index,
  *       1-based like Matrix Market (comments as above). "-inf" is not
  *       allowed: an index without a bound is simply not listed.
+ * Every line ends with a newline: a last entry without one is refused (the
+ * file may have been cut short inside that number).
  * Readers throw InputError with one line naming file, line and problem.
  */
 namespace unilateral::lcp
