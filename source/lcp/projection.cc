@@ -13,6 +13,30 @@
 
 namespace unilateral::lcp
 {
+  namespace
+  {
+    /**
+     * Whether the multiplier @p lambda_i = (A u - b)_i is within the
+     * rounding of its own terms, sum_j |A_ij u_j| + |b_i|: no force the
+     * arithmetic can tell from none. Where nothing touches (a plate the
+     * load lifts off its obstacle) every multiplier is such noise, and the
+     * ratio test of interior_point_active_set would close about half of
+     * them, for the projection to reopen over many iterations.
+     */
+    bool
+    within_rounding(const Problem &problem,
+                    const Vector  &u,
+                    const Index    i,
+                    const double   lambda_i)
+    {
+      double terms = std::abs(problem.b[i]);
+      for (SparseMatrix::InnerIterator it(problem.A, i); it; ++it)
+        terms += std::abs(it.value() * u[it.row()]);
+      return std::abs(lambda_i) <=
+             100 * std::numeric_limits<double>::epsilon() * terms;
+    }
+  } // namespace
+
   std::vector<Index>
   interior_point_active_set(const Problem &problem, const Vector &u)
   {
@@ -29,7 +53,8 @@ namespace unilateral::lcp
       {
         const Index i = problem.constrained[k];
         if ((u[i] - problem.lower_bound[k]) * lambda_size <=
-            lambda[i] * slack_size)
+              lambda[i] * slack_size &&
+            !within_rounding(problem, u, i, lambda[i]))
           active.push_back(i);
       }
     return active;

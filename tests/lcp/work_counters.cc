@@ -567,6 +567,25 @@ main()
               << yes_no(relative_difference(u, pdas_u) < 1e-10) << "\n";
   }
 
+  // Nothing touches (a membrane the load lifts off an obstacle far
+  // below): every multiplier of the interior point's answer is rounding
+  // noise, and the projection must start with every constraint open, not
+  // with the half that the ratio of noise to slack would close.
+  {
+    const Index         k = 20;
+    const SparseMatrix  L = laplacian(k);
+    std::vector<Index>  S(k * k);
+    std::vector<double> lower(k * k, -1e3);
+    for (Index i = 0; i < k * k; ++i)
+      S[i] = i;
+    const Problem lifted =
+      make_problem(DenseMatrix(L), Vector::Constant(k * k, 1.0), S, lower);
+    const Report ip = solve_with(lifted, method("interior_point"), u);
+    std::cout << "interior point, nothing touches: " << to_string(ip.status)
+              << ", one projection iteration: "
+              << yes_no(ip.projection_iterations == 1) << "\n";
+  }
+
   // Interior point: one analysis of the pattern for all its Newton systems.
   {
     SolverParameters parameters;
