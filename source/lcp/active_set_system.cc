@@ -128,8 +128,8 @@ namespace unilateral::lcp
       full_ordering = this->inherited->ordering_of_A;
     if (this->inherited && this->inherited->analysis_only)
       analysis_of_A = this->inherited;
-    // Only a factor of this A's size can precondition (an ordering alone,
-    // or a factor that failed, cannot).
+    // Only a factor of this A's size can precondition (an ordering or an
+    // analysis alone, or a factor that failed, cannot).
     if (this->inherited &&
         (this->inherited->fixed.size() != std::size_t(A.rows()) ||
          !this->inherited->cholesky.has_factor()))
@@ -221,19 +221,20 @@ namespace unilateral::lcp
     const bool settling = active_set_settling(fixed);
     // An analysis of A's full pattern handed over by the stage before (the
     // interior point's Newton matrix) makes the full pattern the cheaper
-    // way for as long as it is kept: each A_FF would need a symbolic pass
-    // and a copy of its pattern, and the projection after an interior point
-    // takes a few iterations of small changes
+    // way while at least half the unknowns are free: each A_FF would need
+    // a symbolic pass and a copy of its pattern
     // (benchmarks/masonry_tables/README.md, "Design measurements").
-    const bool take_analysis =
-      analysis_of_A != nullptr && analysis_of_A.use_count() == 1 &&
-      !own->cholesky.distributed() && !analysis_of_A->cholesky.distributed();
+    const bool mostly_free   = n_fixed <= taken_analysis_threshold * n;
+    const bool take_analysis = mostly_free && analysis_of_A != nullptr &&
+                               analysis_of_A.use_count() == 1 &&
+                               !own->cholesky.distributed() &&
+                               !analysis_of_A->cholesky.distributed();
     // A distributed factorisation always takes the full pattern: its
     // symbolic analysis (a parallel ordering over all ranks) is then run
     // once for every active set.
     const bool full_pattern = n_fixed <= reduced_threshold * n || settling ||
                               own->cholesky.distributed() || take_analysis ||
-                              took_analysis_of_A;
+                              (took_analysis_of_A && mostly_free);
     if (take_analysis)
       {
         // Made non-const by its owner, held by no one else: taking its

@@ -1,6 +1,7 @@
 #include <unilateral/base/input_error.h>
 #include <unilateral/base/ranks.h>
 #include <unilateral/base/text.h>
+#include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/answer_checks.h>
 #include <unilateral/lcp/distributed_cholesky.h>
 #include <unilateral/lcp/projection.h>
@@ -301,7 +302,14 @@ namespace unilateral::lcp
         solution.u.size() == problem.size() &&
         passes_checks(problem, parameters.kkt_tolerance, solution.u);
       if (!report.converged() || !parameters.projection || exact_answer)
-        return outcome;
+        {
+          // An analysis handed over for a projection that does not run
+          // holds the storage of the method's whole factor: freed now,
+          // before a verification or a hand-over needs the memory.
+          if (solution.factor != nullptr && solution.factor->analysis_only)
+            solution.factor.reset();
+          return outcome;
+        }
 
       // An approximate method that ran on A itself, and an interior-point
       // method (on A + eps d I only where bodies float), continue from the

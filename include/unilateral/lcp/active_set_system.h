@@ -34,17 +34,18 @@ namespace unilateral::lcp
     void
     solve(const DenseMatrix &B, DenseMatrix &X) const;
 
-    /// No factor for any X, only the symbolic analysis of A's full
-    /// pattern (see analysis_of).
+    /// No factor of K(X) for any X: the analysis of A's full pattern,
+    /// and the storage of a factor made in it (see analysis_of).
     bool analysis_only = false;
 
     /**
-     * No factor, only the symbolic analysis of A's pattern and its
-     * ordering, taken from @p analysed (left empty), for the systems of a
-     * later stage: the projection after an interior-point method, whose
-     * Newton matrix has A's pattern and was analysed once (in METIS's
-     * nested dissection where AMD's fronts are large). The projection's
-     * first system then takes the full pattern in that analysis.
+     * The symbolic analysis of A's pattern and its ordering, taken from
+     * @p analysed (left empty), for the systems of a later stage: the
+     * projection after an interior-point method, whose Newton matrix has
+     * A's pattern and was analysed once (in METIS's nested dissection where
+     * AMD's fronts are large). The storage of @p analysed's factor comes
+     * with it (its values are of no use), so that the projection factorises
+     * into memory already touched; whoever does not take it must drop it.
      */
     static std::shared_ptr<const ActiveSetFactor>
     analysis_of(SparseCholesky &analysed);
@@ -178,6 +179,14 @@ namespace unilateral::lcp
     /// Fraction of fixed indices above which A_FF is factorised on its own,
     /// unless the active set is settling.
     static constexpr double reduced_threshold = 1.0 / 6.0;
+
+    /// Fraction of fixed indices up to which an analysis of the full
+    /// pattern handed over by the stage before is taken and kept: where at
+    /// least half the unknowns are free, its factor costs a few times A_FF's
+    /// at most, and A_FF's analysis and copy are saved; with more fixed
+    /// (the dense Schur complement of a wall whose contacts are mostly
+    /// closed) A_FF is far smaller.
+    static constexpr double taken_analysis_threshold = 1.0 / 2.0;
 
     /// Changes against the nearest factor, as a fraction of the unknowns,
     /// up to which the active set counts as settling: its next changes are

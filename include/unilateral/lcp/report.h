@@ -155,8 +155,10 @@ namespace unilateral::lcp
     Vector             u;
     Vector             lambda;
     std::vector<Index> active_set;
-    /// The last factorisation of an active-set method, handed to a
-    /// follow-up solve on a nearby matrix (the projection step).
+    /// The last factorisation of an active-set method, or the analysis of
+    /// an interior-point method's Newton matrix (with its factor's storage),
+    /// handed to a follow-up solve on a nearby matrix (the projection
+    /// step).
     std::shared_ptr<const ActiveSetFactor> factor;
   };
 } // namespace unilateral::lcp

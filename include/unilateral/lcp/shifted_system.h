@@ -1,7 +1,9 @@
 #pragma once
 
+#include <unilateral/lcp/active_set_system.h>
 #include <unilateral/lcp/sparse_cholesky.h>
 
+#include <memory>
 #include <vector>
 
 namespace unilateral::lcp
@@ -24,12 +26,13 @@ namespace unilateral::lcp
     void
     solve(const Vector &r, Vector &x) const;
 
-    /// The factorisation, whose analysis a later stage on A's pattern may
-    /// take over (ActiveSetFactor::analysis_of).
-    SparseCholesky &
-    factorisation()
+    /// The analysis of A's pattern, with the factor's storage, for a later
+    /// stage on A's pattern (ActiveSetFactor::analysis_of); this system is
+    /// left without a factor.
+    std::shared_ptr<const ActiveSetFactor>
+    hand_over_analysis()
     {
-      return cholesky;
+      return ActiveSetFactor::analysis_of(cholesky);
     }
 
   private:

@@ -362,14 +362,15 @@ namespace unilateral::lcp
 
       /// The answer: z with its slack exactly psi + gap on J1, and the
       /// analysis of the Newton matrix for the projection's systems (they
-      /// have A's pattern).
+      /// have A's pattern). Once, at the end: the Newton matrix is left
+      /// without its factor.
       void
       finish(Solution &solution)
       {
         solution.u = z;
         for (Index j = 0; j < n_c; ++j)
           solution.u[problem.constrained[j]] = problem.lower_bound[j] + gap[j];
-        solution.factor = ActiveSetFactor::analysis_of(newton.factorisation());
+        solution.factor = newton.hand_over_analysis();
       }
 
       /**

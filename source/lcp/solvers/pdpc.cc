@@ -305,14 +305,15 @@ namespace unilateral::lcp
 
       /// The answer in the original variables, u consistent with the
       /// slacks, and the analysis of the Newton matrix for the projection's
-      /// systems (they have A's pattern).
+      /// systems (they have A's pattern). Once, at the end: the Newton
+      /// matrix is left without its factor.
       void
       finish(const Vector &scale, Solution &solution)
       {
         for (Index k = 0; k < n_c; ++k)
           u[problem.constrained[k]] = problem.lower_bound[k] + slack[k];
         solution.u      = scale.cwiseProduct(u);
-        solution.factor = ActiveSetFactor::analysis_of(newton.factorisation());
+        solution.factor = newton.hand_over_analysis();
       }
 
       /// Of the last residual(): s^T lambda / n_c and ||r||_2.
