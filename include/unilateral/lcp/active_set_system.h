@@ -67,8 +67,9 @@ namespace unilateral::lcp
    * Two ways to factorise K(X), chosen by the size of X: with few fixed
    * indices the full pattern is kept (fixed rows and columns replaced by the
    * diagonal), so the one symbolic analysis of A serves every active set
-   * (so does the first system after a stage that analysed A's pattern and
-   * hands over that analysis: the projection after an interior point);
+   * (so it does, while at least half the unknowns are free, after a stage
+   * that analysed A's pattern and handed over that analysis: the
+   * projection after an interior point);
    * with many (more than a sixth of the unknowns, where the smaller factor
    * pays for a symbolic pass) A_FF is extracted and factorised in the AMD
    * ordering of A restricted to F, "in the ordering established in the
