@@ -272,7 +272,7 @@ namespace unilateral::lcp
     std::shared_ptr<const ActiveSetFactor> inherited;
     /// The analysis of A's full pattern a stage before left (an
     /// ActiveSetFactor::analysis_of), until the first factorisation takes
-    /// it; and whether the own factor holds it (then every K(X) is
+    /// or drops it; and whether the own factor holds it (then every K(X) is
     /// factorised in the full pattern, with no analysis of its own).
     std::shared_ptr<const ActiveSetFactor> analysis_of_A;
     bool                                   took_analysis_of_A = false;

@@ -68,7 +68,10 @@ namespace unilateral::lcp
    * measurements"): the first system was singular. Compared in units of
    * their own size, s / |s| < lambda / |lambda| (Tapia's indicators,
    * scale-free), it errs towards closing contacts, which the next test
-   * reopens safely.
+   * reopens safely. A multiplier within the rounding of its own terms
+   * counts as no force and leaves its contact open: where nothing touches,
+   * every multiplier is such noise, and the ratio alone would close half
+   * of them at random.
    */
   std::vector<Index>
   interior_point_active_set(const Problem &problem, const Vector &u);
