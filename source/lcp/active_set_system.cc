@@ -227,8 +227,7 @@ namespace unilateral::lcp
     const bool mostly_free   = n_fixed <= taken_analysis_threshold * n;
     const bool take_analysis = mostly_free && analysis_of_A != nullptr &&
                                analysis_of_A.use_count() == 1 &&
-                               !own->cholesky.distributed() &&
-                               !analysis_of_A->cholesky.distributed();
+                               !own->cholesky.distributed();
     // A distributed factorisation always takes the full pattern: its
     // symbolic analysis (a parallel ordering over all ranks) is then run
     // once for every active set.

@@ -15,25 +15,14 @@ namespace unilateral::lcp
 {
   namespace
   {
-    /**
-     * Whether the multiplier @p lambda_i = (A u - b)_i is within the
-     * rounding of its own terms, sum_j |A_ij u_j| + |b_i|: no force the
-     * arithmetic can tell from none. Where nothing touches (a plate the
-     * load lifts off its obstacle) every multiplier is such noise, and the
-     * ratio test of interior_point_active_set would close about half of
-     * them, for the projection to reopen over many iterations.
-     */
-    bool
-    within_rounding(const Problem &problem,
-                    const Vector  &u,
-                    const Index    i,
-                    const double   lambda_i)
+    /// The rounding of row i's forces (A u - b)_i: a hundred times machine
+    /// epsilon times the sizes of their terms, |b_i| + (|A| |u|)_i, with
+    /// @p terms = absolute_product(A, u).
+    double
+    row_rounding(const Problem &problem, const Vector &terms, const Index i)
     {
-      double terms = std::abs(problem.b[i]);
-      for (SparseMatrix::InnerIterator it(problem.A, i); it; ++it)
-        terms += std::abs(it.value() * u[it.row()]);
-      return std::abs(lambda_i) <=
-             100 * std::numeric_limits<double>::epsilon() * terms;
+      return 100 * std::numeric_limits<double>::epsilon() *
+             (std::abs(problem.b[i]) + terms[i]);
     }
   } // namespace
 
@@ -48,13 +37,19 @@ namespace unilateral::lcp
         slack_size    = std::max(slack_size, u[i] - problem.lower_bound[k]);
         lambda_size   = std::max(lambda_size, lambda[i]);
       }
+    // A multiplier within the rounding of its own terms is no force the
+    // arithmetic can tell from none: where nothing touches (a plate the
+    // load lifts off its obstacle) every multiplier is such noise, and the
+    // ratio test alone would close about half of them, for the projection
+    // to reopen over many iterations.
+    const Vector       terms = absolute_product(problem.A, u);
     std::vector<Index> active;
     for (Index k = 0; k < problem.n_constrained(); ++k)
       {
         const Index i = problem.constrained[k];
         if ((u[i] - problem.lower_bound[k]) * lambda_size <=
               lambda[i] * slack_size &&
-            !within_rounding(problem, u, i, lambda[i]))
+            std::abs(lambda[i]) > row_rounding(problem, terms, i))
           active.push_back(i);
       }
     return active;
@@ -227,9 +222,7 @@ namespace unilateral::lcp
       const Vector terms = absolute_product(problem.A, later);
       for (Eigen::Index i = 0; i < later.size(); ++i)
         if (std::abs(later[i]) > 100 * std::abs(earlier[i]) + floor &&
-            eps * std::abs(later[i]) >
-              100 * std::numeric_limits<double>::epsilon() *
-                (std::abs(problem.b[i]) + terms[i]))
+            eps * std::abs(later[i]) > row_rounding(problem, terms, i))
           return true;
       return false;
     }
