@@ -43,6 +43,15 @@ UNILATERAL = os.path.join(BUILD, "unilateral")
 
 # Our methods (all exact at the end: ~1e-14 relative KKT).
 OURS = ["pdas", "pdpc", "interior_point", "block_pivoting"]
+# Not in the default list: the interior point in its predictor-corrector
+# variant (`--ours interior_point_pc`), the walls' fastest route on the
+# running bond. A name here is a method with settings of its subsection.
+OUR_VARIANTS = {
+    "interior_point_pc": ("interior_point",
+                          "  subsection Interior point\n"
+                          "    set Variant = predictor-corrector\n"
+                          "  end\n"),
+}
 
 # (label, driver, method, options). Drivers document their settings.
 # Not in the default list: SNES VINEWTONSSLS (petsc_driver snes_vinewtonssls)
@@ -267,7 +276,9 @@ def run_ours(method, directory, runs, repeats):
                 "  set Right-hand side file = %s/lcp_b.txt\n"
                 "  set Constraints file = %s/lcp_constraints.txt\n"
                 "end\n" % (directory, directory, directory))
-        f.write("subsection Solver\n  set Method = %s\nend\n" % method)
+        name, settings = OUR_VARIANTS.get(method, (method, ""))
+        f.write("subsection Solver\n  set Method = %s\n%send\n"
+                % (name, settings))
     best = None
     for attempt in range(repeats):
         code, seconds, out, err = run_command([UNILATERAL, prm], timeout=3600)
