@@ -5,7 +5,10 @@
 //     slopes and twists differ in stiffness by about 1e17): converged only
 //     with the deflection of the 100 mm plate times 1e-20. Found by a
 //     review (2026-11-27): tnnmg ended 'converged' 3.7e-4 off, its KKT
-//     residuals relative to the largest force hiding the others' errors.
+//     residuals relative to the largest force hiding the others' errors;
+//     then every method ended 'singular' (saying why), and since the
+//     scene scales the unknowns by the element size (2026-11-30,
+//     tests/plate/length_unit) every method converges, to that deflection.
 //  2. a load of -1e-150: the deflection of the load -1 times 1e-150 (tnnmg
 //     ended with NaN, blaming its iteration limit);
 //  3. an obstacle at 1e150 or 1e-150 above the plate, under a load far

@@ -157,7 +157,10 @@ namespace
     for (long j = 0; j < P.cols(); ++j)
       coarse_field[j] =
         component_value(p, coarse_unknowns[j].first, coarse_unknowns[j].second);
-    const Vector fine_field = P * coarse_field;
+    // P carries the solvers' unknowns, scaled on a mesh whose elements are
+    // far from unit length (PlateScene::unknown_scale).
+    const Vector fine_field =
+      fine.scene->dofs_of(P * coarse.scene->unknowns_of(coarse_field));
     double       largest = 0, error = 0;
     unsigned int checked = 0;
     const double margin  = 1e-9 * length_x;
@@ -182,16 +185,21 @@ namespace
   void
   check_transfer(const unsigned int n_x,
                  const unsigned int n_y,
-                 const std::string &boundary)
+                 const std::string &boundary,
+                 const double       length_x = 100)
   {
-    const auto fine =
-      plate_runs::run_plate("transfer_" + std::to_string(n_x) + "_" +
-                              boundary.substr(0, 5),
-                            plate("steel", "psi3", "f1", n_x, n_y, boundary),
-                            "tnnmg");
+    const std::string name = "transfer_" + std::to_string(n_x) + "_" +
+                             boundary.substr(0, 5) +
+                             (length_x != 100 ? "_short" : "");
+    const auto fine = plate_runs::run_plate(
+      name,
+      plate("steel", "psi3", "f1", n_x, n_y, boundary, length_x),
+      "tnnmg");
     const auto &hierarchy = *fine.scene->problem().hierarchy;
-    std::cout << n_x << " x " << n_y << " " << boundary << ": "
-              << hierarchy.levels.size() << " levels" << std::endl;
+    std::cout << n_x << " x " << n_y << " " << boundary;
+    if (length_x != 100)
+      std::cout << ", " << length_x << " x 100 mm";
+    std::cout << ": " << hierarchy.levels.size() << " levels" << std::endl;
     SparseMatrix    A_fine = fine.scene->problem().A;
     Vector          b_fine = fine.scene->problem().b;
     plate_runs::Run finer_run;
@@ -203,8 +211,8 @@ namespace
         c_x         = coarser(c_x);
         c_y         = coarser(c_y);
         auto coarse = plate_runs::run_plate(
-          "transfer_" + std::to_string(c_x) + "_" + boundary.substr(0, 5),
-          plate("steel", "psi3", "f1", c_x, c_y, boundary),
+          name + "_" + std::to_string(c_x),
+          plate("steel", "psi3", "f1", c_x, c_y, boundary, length_x),
           "pdas");
         const SparseMatrix &P = hierarchy.levels[l].prolongation;
         const SparseMatrix  galerkin =
@@ -232,9 +240,9 @@ namespace
                 reproduces_bicubic(P,
                                    coarse,
                                    *finer,
-                                   100.0 / c_x,
+                                   length_x / c_x,
                                    100.0 / c_y,
-                                   100,
+                                   length_x,
                                    100,
                                    boundary == "fully clamped"));
         A_fine    = A;
@@ -275,6 +283,9 @@ main()
   check_transfer(16, 16, "fully clamped");
   check_transfer(20, 12, "fully clamped");
   check_transfer(45, 18, "fully clamped");
+  // Elements 0.005, 0.01 and 0.02 mm long: the solvers' unknowns scaled on
+  // the two finer meshes, not on the coarsest (PlateScene::unknown_scale).
+  check_transfer(20, 12, "fully clamped", 0.1);
 
   std::cout << "TNNMG against PDAS:" << std::endl;
   for (const std::string obstacle : {"psi1", "psi2", "psi3"})

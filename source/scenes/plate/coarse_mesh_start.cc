@@ -75,8 +75,9 @@ namespace unilateral::plate
   {
     // The field of this (coarse) mesh, cell by cell.
     dealii::Vector<double> coarse_values(dof_handler.n_dofs());
+    const lcp::Vector      coarse_dofs = dofs_of(lcp_solution.u);
     for (lcp::Index k = 0; k < free_dofs.size(); ++k)
-      coarse_values[free_dofs.dof[k]] = lcp_solution.u[k];
+      coarse_values[free_dofs.dof[k]] = coarse_dofs[k];
     const Geometry &geometry = parameters.geometry;
     const double    h_x      = geometry.length_x / geometry.n_x;
     const double    h_y      = geometry.length_y / geometry.n_y;
@@ -153,7 +154,7 @@ namespace unilateral::plate
                fine.parameters.geometry.length_y);
     const double  contact_band = 2.4 * h * h * largest_deflection;
     lcp::Solution start;
-    start.u = u;
+    start.u = fine.unknowns_of(u); // the bounds' w are not scaled
     for (lcp::Index k = 0; k < fine.lcp_problem.n_constrained(); ++k)
       {
         const lcp::Index i = fine.lcp_problem.constrained[k];

@@ -158,6 +158,12 @@ namespace unilateral::plate
       }
     lcp::SparseMatrix P(fine.free_dofs.size(), free_dofs.size());
     P.setFromTriplets(entries.begin(), entries.end());
+    // Between the solvers' unknowns: scaled on either mesh (each by its own
+    // element size) where its elements are far from unit length.
+    if (fine.unknown_scale.size() > 0)
+      P = fine.unknown_scale.cwiseInverse().asDiagonal() * P;
+    if (unknown_scale.size() > 0)
+      P = P * unknown_scale.asDiagonal();
     return P;
   }
 

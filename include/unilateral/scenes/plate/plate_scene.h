@@ -122,6 +122,14 @@ namespace unilateral::plate
       return dof_handler;
     }
 
+    /// The free DOFs (w, w_x, w_y, w_xy in J's order) of the solvers'
+    /// unknowns @p u, and the reverse: they differ where the elements are
+    /// far from unit length (see unknown_scale).
+    lcp::Vector
+    dofs_of(const lcp::Vector &u) const;
+    lcp::Vector
+    unknowns_of(const lcp::Vector &dofs) const;
+
   protected:
     /// The plate [0, L1] x [0, L2] as n1 x n2 equal rectangles.
     void
@@ -171,10 +179,10 @@ namespace unilateral::plate
     lcp::Solution
     interpolate_to(const PlateScene &fine) const;
 
-    /// In mesh_hierarchy.cc: this mesh's unknowns carried to the free DOFs
+    /// In mesh_hierarchy.cc: this mesh's unknowns carried to the unknowns
     /// of @p fine, a finer mesh of the same plate: the bicubic field
-    /// evaluated at its nodes (w, w_x, w_y, w_xy), as a |J_fine| x |J|
-    /// matrix.
+    /// evaluated at its nodes (w, w_x, w_y, w_xy, each scaled as the
+    /// solvers' unknowns are on either mesh), as a |J_fine| x |J| matrix.
     lcp::SparseMatrix
     interpolation_to(const PlateScene &fine) const;
 
@@ -182,6 +190,25 @@ namespace unilateral::plate
     /// that works on a hierarchy of meshes.
     std::shared_ptr<const lcp::Hierarchy>
     make_hierarchy() const;
+
+    /**
+     * The solvers' unknowns are this plate's free DOFs divided by
+     * unknown_scale (empty: not scaled). Where the elements are far from
+     * unit length in the plate's units, a node's unknowns differ in size by
+     * powers of h (w, h w_x, h w_y and h^2 w_xy are alike) and so do A's
+     * diagonal entries, by h^-4 between w and w_xy: at h = 1e-3 (a 10 cm
+     * plate in metres) PDAS's and block pivoting's factorisations judged A
+     * singular. There the solvers get w, h_x w_x, h_y w_y and h_x h_y w_xy,
+     * all lengths of the deflection's size: A becomes S A S and b S b with
+     * S = diag(1, 1 / h_x, 1 / h_y, 1 / (h_x h_y)), the bounds (on w) and
+     * the contact forces stay as they are. Within a factor 100 of unit
+     * length (diagonals within 1e8, where the factorisations have not
+     * failed) nothing is scaled, as with the force unit below: the
+     * paper's plates (h = 1.1-5 mm) and the multigrid benchmark's (down to
+     * 0.1 mm) keep their numbers. The exported LCP and solution are the
+     * solvers'.
+     */
+    lcp::Vector unknown_scale;
 
     Parameters parameters;
     double     rigidity;
