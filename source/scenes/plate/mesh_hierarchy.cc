@@ -138,13 +138,22 @@ namespace unilateral::plate
           {
             if (dofs[component] < 0)
               continue;
-            double largest = 0;
+            // Between the solvers' unknowns: scaled on either mesh (each
+            // by its own element size) where its elements are far from
+            // unit length, before the test below, which compares them.
+            const double row_scale = fine.unknown_scale.size() > 0 ?
+                                       1 / fine.unknown_scale[dofs[component]] :
+                                       1.0;
+            double       largest   = 0;
             for (unsigned int k = 0; k < n_local; ++k)
               {
                 weights[k] = component == 0 ? values[k] :
                              component == 3 ? hessians[k][0][1] :
                                               gradients[k][component - 1];
-                largest    = std::max(largest, std::abs(weights[k]));
+                weights[k] *= row_scale;
+                if (unknown_scale.size() > 0 && cell_dofs[c][k] >= 0)
+                  weights[k] *= unknown_scale[cell_dofs[c][k]];
+                largest = std::max(largest, std::abs(weights[k]));
               }
             // Weights below round-off of the largest are zeros that the
             // evaluation at a coarse node or edge left inexact.
@@ -158,12 +167,6 @@ namespace unilateral::plate
       }
     lcp::SparseMatrix P(fine.free_dofs.size(), free_dofs.size());
     P.setFromTriplets(entries.begin(), entries.end());
-    // Between the solvers' unknowns: scaled on either mesh (each by its own
-    // element size) where its elements are far from unit length.
-    if (fine.unknown_scale.size() > 0)
-      P = fine.unknown_scale.cwiseInverse().asDiagonal() * P;
-    if (unknown_scale.size() > 0)
-      P = P * unknown_scale.asDiagonal();
     return P;
   }
 

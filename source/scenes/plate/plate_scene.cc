@@ -125,12 +125,14 @@ namespace unilateral::plate
     const auto   far_from_unit = [](const double h) {
       return h < 1e-2 || h > 1e2;
     };
-    std::array<double, 4> component_scale;
-    component_scale.fill(1);
-    component_scale[fe::BognerFoxSchmit::slope_x] = 1 / h_x;
-    component_scale[fe::BognerFoxSchmit::slope_y] = 1 / h_y;
-    component_scale[fe::BognerFoxSchmit::twist]   = 1 / (h_x * h_y);
     const bool scaled = far_from_unit(h_x) || far_from_unit(h_y);
+    component_scale.fill(1);
+    if (scaled)
+      {
+        component_scale[fe::BognerFoxSchmit::slope_x] = 1 / h_x;
+        component_scale[fe::BognerFoxSchmit::slope_y] = 1 / h_y;
+        component_scale[fe::BognerFoxSchmit::twist]   = 1 / (h_x * h_y);
+      }
     unknown_scale.resize(scaled ? free_dofs.size() : 0);
 
     // The w DOF of every node that is not clamped, with its vertex.
@@ -438,6 +440,8 @@ namespace unilateral::plate
       .set("length_y", parameters.geometry.length_y)
       .set("thickness", parameters.geometry.thickness)
       .set("lcp_force_unit", unit)
+      .set("lcp_unknown_scale",
+           std::vector<double>(component_scale.begin(), component_scale.end()))
       .set("boundary_condition",
            parameters.geometry.clamp_twist ? "fully clamped" : "clamped")
       .set("material", parameters.material.name)

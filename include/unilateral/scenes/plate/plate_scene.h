@@ -13,6 +13,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -202,13 +203,17 @@ namespace unilateral::plate
      * all lengths of the deflection's size: A becomes S A S and b S b with
      * S = diag(1, 1 / h_x, 1 / h_y, 1 / (h_x h_y)), the bounds (on w) and
      * the contact forces stay as they are. Within a factor 100 of unit
-     * length (diagonals within 1e8, where the factorisations have not
-     * failed) nothing is scaled, as with the force unit below: the
-     * paper's plates (h = 1.1-5 mm) and the multigrid benchmark's (down to
-     * 0.1 mm) keep their numbers. The exported LCP and solution are the
-     * solvers'.
+     * length nothing is scaled, as with the force unit below: the paper's
+     * plates (h = 1.1-5 mm) and TNNMG's levels in the multigrid benchmark
+     * (h = 0.1-50 mm) keep their numbers. Unscaled, the factorisations
+     * failed from about 1e-3 and 1e3 on, limits that move inwards as the
+     * mesh is refined (benchmarks/plate_tables/README.md, "Element size").
+     * The exported LCP and solution are the solvers'.
      */
     lcp::Vector unknown_scale;
+    /// unknown_scale of a node's w, w_x, w_y, w_xy (summary.json:
+    /// lcp_unknown_scale; all 1 where nothing is scaled).
+    std::array<double, 4> component_scale = {{1, 1, 1, 1}};
 
     Parameters parameters;
     double     rigidity;
