@@ -102,6 +102,10 @@ namespace unilateral::lcp
       double auto_regularisation;
       /// A hand-over that starts from the last attempt's iterate.
       bool from_iterate = false;
+      /// A follow-up after the projection step was taken (once per run).
+      bool after_projection_taken = false;
+      /// The settings of the follow-up that made this attempt, as text.
+      std::string settings = {};
     };
 
     // The method alone on @p problem as given.
@@ -335,18 +339,33 @@ namespace unilateral::lcp
       return outcome;
     }
 
-    // The follow-up of @p kind that @p info declares for @p status.
+    // The follow-up of @p kind that @p info declares for @p status (of the
+    // method, or of the projection after it: FollowUp::after_projection).
     const FollowUp *
     declared_follow_up(const SolverInfo       &info,
                        const SolverParameters &parameters,
                        const Status            status,
-                       const FollowUp::Kind    kind)
+                       const FollowUp::Kind    kind,
+                       const bool              after_projection = false)
     {
       for (const FollowUp &follow_up : info.follow_ups)
         if (follow_up.kind == kind && follow_up.when == status &&
+            follow_up.after_projection == after_projection &&
             !(follow_up.only_at_default_limit && parameters.max_iterations > 0))
           return &follow_up;
       return nullptr;
+    }
+
+    // "'Solver/<entry>' = <value>, ..." of a follow-up's settings.
+    std::string
+    settings_text(
+      const std::vector<std::pair<std::string, std::string>> &settings)
+    {
+      std::string text;
+      for (const auto &[entry, value] : settings)
+        text +=
+          (text.empty() ? "'Solver/" : ", 'Solver/") + entry + "' = " + value;
+      return text;
     }
 
     // The attempt a follow-up asks for.
@@ -358,7 +377,10 @@ namespace unilateral::lcp
                    from.auto_regularisation};
       next.parameters.method     = follow_up.method;
       next.parameters.projection = true;
-      next.from_iterate          = follow_up.from_iterate &&
+      next.after_projection_taken =
+        from.after_projection_taken || follow_up.after_projection;
+      next.settings     = settings_text(follow_up.settings);
+      next.from_iterate = follow_up.from_iterate &&
                           SolverRegistry::get(follow_up.method).warm_start;
       for (const auto &[entry, value] : follow_up.settings)
         next.parameters.set(entry, value);
@@ -376,7 +398,10 @@ namespace unilateral::lcp
      *    method declares it (a review: block pivoting on the Schur
      *    complement ended `singular` on A = [1 1; 1 1], b = (1, 1), whose
      *    solutions form a segment);
-     *  - a hand-over the method declares.
+     *  - a hand-over the method declares;
+     *  - once per run, the follow-up a method declares for a projection
+     *    step that did not settle after it (the interior point again with
+     *    a tighter complementarity tolerance).
      */
     std::optional<Attempt>
     next_attempt(const Attempt &attempt,
@@ -411,6 +436,24 @@ namespace unilateral::lcp
                       << std::endl;
           return next;
         }
+      // The method converged, and the projection from its answer did not.
+      if (const FollowUp *again =
+            outcome.method_status == Status::converged &&
+                !attempt.after_projection_taken ?
+              declared_follow_up(*attempt.method,
+                                 attempt.parameters,
+                                 outcome.report.status,
+                                 FollowUp::Kind::hand_over,
+                                 true) :
+              nullptr)
+        {
+          Attempt next = follow_up_attempt(*again, attempt);
+          if (progress != nullptr)
+            *progress << "    " << outcome.report.message << "; the "
+                      << attempt.method->label << " again, with "
+                      << next.settings << std::endl;
+          return next;
+        }
       return std::nullopt;
     }
 
@@ -434,7 +477,11 @@ namespace unilateral::lcp
            (next = next_attempt(attempt, outcome, progress));
            attempt = std::move(*next))
         {
-          const bool retry = next->method == attempt.method;
+          // The same method after its projection failed is a run of its
+          // own, reported as a hand-over is.
+          const bool again =
+            next->after_projection_taken && !attempt.after_projection_taken;
+          const bool retry = next->method == attempt.method && !again;
           if (!retry)
             start = next->from_iterate ? solution : Solution();
           solution            = start;
@@ -448,11 +495,15 @@ namespace unilateral::lcp
               later.report.solver = earlier.solver;
               later.report.iterations += earlier.iterations;
               later.report.add_times(earlier,
-                                     attempt.method->name + " (handed over): ");
+                                     attempt.method->name +
+                                       (again ? " (first run): " :
+                                                " (handed over): "));
               const std::string note =
                 earlier.message + " after " +
                 quantity(earlier.iterations, "iteration") +
-                "; handed over to " + next->method->label +
+                (again ? "; the " + next->method->label + " again, with " +
+                           next->settings :
+                         "; handed over to " + next->method->label) +
                 ", whose answer is given";
               later.report.message = later.report.message.empty() ?
                                        note :

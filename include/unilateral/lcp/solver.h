@@ -221,6 +221,11 @@ namespace unilateral::lcp
     bool from_iterate = false;
     /// Options set for it, as "<subsection>/<entry>" and value.
     std::vector<std::pair<std::string, std::string>> settings;
+    /// Chosen by how the projection step after the method ended (@p when),
+    /// where the method itself converged, rather than by the method's own
+    /// status; taken once per run (the next attempt's projection may end
+    /// alike).
+    bool after_projection = false;
   };
 
   /// Options of a method worth running as a method of their own.
