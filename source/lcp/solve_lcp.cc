@@ -368,6 +368,17 @@ namespace unilateral::lcp
       return text;
     }
 
+    // Whether each of @p follow_up's settings lies below @p parameters'
+    // value (FollowUp::after_projection).
+    bool
+    tightens(const FollowUp &follow_up, const SolverParameters &parameters)
+    {
+      for (const auto &[entry, value] : follow_up.settings)
+        if (!(std::stod(value) < std::stod(parameters.get(entry))))
+          return false;
+      return true;
+    }
+
     // The attempt a follow-up asks for.
     Attempt
     follow_up_attempt(const FollowUp &follow_up, const Attempt &from)
@@ -437,15 +448,15 @@ namespace unilateral::lcp
           return next;
         }
       // The method converged, and the projection from its answer did not.
-      if (const FollowUp *again =
-            outcome.method_status == Status::converged &&
-                !attempt.after_projection_taken ?
-              declared_follow_up(*attempt.method,
-                                 attempt.parameters,
-                                 outcome.report.status,
-                                 FollowUp::Kind::hand_over,
-                                 true) :
-              nullptr)
+      const FollowUp *again = outcome.method_status == Status::converged &&
+                                  !attempt.after_projection_taken ?
+                                declared_follow_up(*attempt.method,
+                                                   attempt.parameters,
+                                                   outcome.report.status,
+                                                   FollowUp::Kind::hand_over,
+                                                   true) :
+                                nullptr;
+      if (again != nullptr && tightens(*again, attempt.parameters))
         {
           Attempt next = follow_up_attempt(*again, attempt);
           if (progress != nullptr)
@@ -494,6 +505,10 @@ namespace unilateral::lcp
             {
               later.report.solver = earlier.solver;
               later.report.iterations += earlier.iterations;
+              // The first run's projection ran (a hand-over follows a
+              // method that failed, whose answer is not projected).
+              later.report.projection_iterations +=
+                earlier.projection_iterations;
               later.report.add_times(earlier,
                                      attempt.method->name +
                                        (again ? " (first run): " :
@@ -501,7 +516,10 @@ namespace unilateral::lcp
               const std::string note =
                 earlier.message + " after " +
                 quantity(earlier.iterations, "iteration") +
-                (again ? "; the " + next->method->label + " again, with " +
+                (again ? " and " +
+                           quantity(earlier.projection_iterations,
+                                    "projection iteration") +
+                           "; the " + next->method->label + " again, with " +
                            next->settings :
                          "; handed over to " + next->method->label) +
                 ", whose answer is given";

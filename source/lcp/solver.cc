@@ -145,37 +145,70 @@ namespace unilateral::lcp
     return *found->second;
   }
 
+  namespace
+  {
+    // "<subsection>/<entry>" split, with the method whose subsection it
+    // names (nullptr: none).
+    const SolverInfo *
+    method_of_entry(const std::string &entry,
+                    std::string       &subsection,
+                    std::string       &name)
+    {
+      const std::size_t slash = entry.rfind('/');
+      subsection = slash == std::string::npos ? "" : entry.substr(0, slash);
+      name       = entry.substr(slash + 1);
+      for (const SolverInfo &info : SolverRegistry::all())
+        if (!subsection.empty() && info.subsection == subsection)
+          return &info;
+      return nullptr;
+    }
+  } // namespace
+
+  std::string
+  SolverParameters::get(const std::string &entry) const
+  {
+    std::string subsection, name;
+    if (const SolverInfo *info = method_of_entry(entry, subsection, name))
+      {
+        // A copy's entries, declared with its current values as defaults.
+        dealii::ParameterHandler          prm;
+        std::unique_ptr<MethodParameters> options =
+          methods.at(info->name)->clone();
+        options->add_parameters(prm);
+        try
+          {
+            return prm.get(name);
+          }
+        catch (const std::exception &)
+          {}
+      }
+    throw InputError("parameter 'Solver/" + entry + "': no such entry");
+  }
+
   void
   SolverParameters::set(const std::string &entry, const std::string &value)
   {
-    const std::size_t slash = entry.rfind('/');
-    const std::string subsection =
-      slash == std::string::npos ? "" : entry.substr(0, slash);
-    const std::string name = entry.substr(slash + 1);
-    for (const SolverInfo &info : SolverRegistry::all())
-      if (!subsection.empty() && info.subsection == subsection)
-        {
-          // A handler of this method's entries alone, bound to its options
-          // (their current values are the defaults): set() runs the binding.
-          dealii::ParameterHandler prm;
-          MethodParameters        &options = *methods.at(info.name);
-          options.add_parameters(prm);
-          try
-            {
-              prm.set(name, value);
-            }
-          catch (const std::exception &)
-            {
-              throw InputError("parameter 'Solver/" + entry + "' = " + value +
-                               ": no such entry, or the value does not match "
-                               "its pattern; see unilateral "
-                               "--print-parameters");
-            }
-          options.check("Solver/" + subsection);
-          return;
-        }
-    throw InputError("parameter 'Solver/" + entry +
-                     "': no method has the subsection '" + subsection + "'");
+    std::string       subsection, name;
+    const SolverInfo *info = method_of_entry(entry, subsection, name);
+    if (info == nullptr)
+      throw InputError("parameter 'Solver/" + entry +
+                       "': no method has the subsection '" + subsection + "'");
+    // A handler of this method's entries alone, bound to its options
+    // (their current values are the defaults): set() runs the binding.
+    dealii::ParameterHandler prm;
+    MethodParameters        &options = *methods.at(info->name);
+    options.add_parameters(prm);
+    try
+      {
+        prm.set(name, value);
+      }
+    catch (const std::exception &)
+      {
+        throw InputError("parameter 'Solver/" + entry + "' = " + value +
+                         ": no such entry, or the value does not match "
+                         "its pattern; see unilateral --print-parameters");
+      }
+    options.check("Solver/" + subsection);
   }
 
   void

@@ -133,6 +133,12 @@ namespace unilateral::lcp
     void
     set(const std::string &entry, const std::string &value);
 
+    /// The current value of one option of a method, as set() takes it
+    /// ("<subsection>/<entry>"). Throws InputError if there is no such
+    /// entry.
+    std::string
+    get(const std::string &entry) const;
+
     /**
      * Declare subsection "Solver" with every method's subsection. The
      * methods' entries are bound to this object's options
@@ -224,7 +230,8 @@ namespace unilateral::lcp
     /// Chosen by how the projection step after the method ended (@p when),
     /// where the method itself converged, rather than by the method's own
     /// status; taken once per run (the next attempt's projection may end
-    /// alike).
+    /// alike), and only where its settings, numbers, tighten the run's
+    /// (each below the current value: a user's tighter one stays).
     bool after_projection = false;
   };
 

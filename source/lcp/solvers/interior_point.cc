@@ -492,11 +492,12 @@ namespace unilateral::lcp
         // guess was wrong on a running bond of m = 30, and the projection
         // cycled. Far below, they are (tests/masonry/stiff_blocks).
         FollowUp tighter;
-        tighter.when             = Status::iteration_limit;
-        tighter.after_projection = true;
-        tighter.method           = info.name;
-        tighter.settings         = {
-                  {"Interior point/Complementarity tolerance", "1e-14"}};
+        tighter.when                  = Status::iteration_limit;
+        tighter.after_projection      = true;
+        tighter.only_at_default_limit = true;
+        tighter.method                = info.name;
+        tighter.settings              = {
+                       {"Interior point/Complementarity tolerance", "1e-14"}};
         info.follow_ups.push_back(tighter);
         return info;
       }
