@@ -171,6 +171,16 @@ main()
      "= 1e-110"},
     // Found by the same review: the value was printed as "21000", the
     // material's own.
+    // The paper's named quantities need units to be converted to.
+    {"named_material_own_units",
+     "set Units = any consistent\n",
+     "Plate/Material/Name",
+     "= steel: is the plate study's"},
+    {"named_obstacle_own_units",
+     "set Units = any consistent\n"
+     "subsection Material\n  set Name = custom\nend\n",
+     "Plate/Obstacle/Function",
+     "= psi3"},
     {"named_material_near_its_own",
      "subsection Material\n  set Name = steel\n"
      "  set Young's modulus = 21000.0001\nend\n",

@@ -86,7 +86,110 @@ namespace unilateral::plate
           }
       return prm.get_entries_wrongly_not_set().count(path) == 0;
     }
+
+    // A number as the shortest text that reads back as itself.
+    std::string
+    exact_text(const double value)
+    {
+      std::ostringstream text;
+      text << std::setprecision(17) << value;
+      return text.str();
+    }
+
+    // The paper's expression @p paper (x, y and its value in mm, or its
+    // value in kg/mm^2 if @p is_length is false) in @p units: a length
+    // psi(x, y) becomes mm psi(x / mm, y / mm), a force per area is
+    // multiplied by kg / mm^2. Unchanged in the paper's units.
+    std::string
+    in_units(const std::string &paper, const Units &units, const bool is_length)
+    {
+      const double factor =
+        is_length ? units.mm : units.kg / (units.mm * units.mm);
+      if (units.mm == 1 && factor == 1)
+        return paper;
+      std::string converted;
+      for (std::size_t i = 0; i < paper.size(); ++i)
+        {
+          const char c          = paper[i];
+          const auto identifier = [&](const std::size_t j) {
+            return j < paper.size() &&
+                   (std::isalnum(static_cast<unsigned char>(paper[j])) ||
+                    paper[j] == '_');
+          };
+          // The paper's expressions name no function or constant with an
+          // x or a y: every standalone x and y is a coordinate.
+          if ((c == 'x' || c == 'y') && !(i > 0 && identifier(i - 1)) &&
+              !identifier(i + 1))
+            converted +=
+              std::string("(") + c + " / " + exact_text(units.mm) + ")";
+          else
+            converted += c;
+        }
+      return exact_text(factor) + " * (" + converted + ")";
+    }
+
+    // A named quantity of the paper in units that name none.
+    void
+    require_labelled_units(const Units       &units,
+                           const std::string &parameter,
+                           const std::string &name,
+                           const std::string &instead)
+    {
+      check_parameter(units.labelled(),
+                      "Plate",
+                      parameter,
+                      name,
+                      "is the plate study's, in mm and kg, and 'Plate/Units' "
+                      "= " +
+                        units.name +
+                        " names no unit to convert it to: " + instead +
+                        ", or choose 'Plate/Units' = mm and kg, mm and N or "
+                        "m and N");
+    }
   } // namespace
+
+  std::string
+  Units::stress() const
+  {
+    if (!labelled())
+      return "";
+    return length == "m" && force == "N" ? "Pa" : force + "/" + length + "^2";
+  }
+
+  std::string
+  Units::moment() const
+  {
+    return labelled() ? force + " " + length : "";
+  }
+
+  void
+  Units::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Units",
+      "mm and kg",
+      dealii::Patterns::Selection("mm and kg|mm and N|m and N|any consistent"),
+      "The units of every number in subsection Plate. mm and kg: the plate "
+      "study's (lengths in mm, forces in kilogram-force, so E and f in "
+      "kg/mm^2); mm and N (E and f in N/mm^2 = MPa); m and N (E and f in "
+      "Pa); any consistent: units of your own, consistent with each other "
+      "(the summary then names none). The named materials (steel, bronze, "
+      "lead), obstacles (psi1-psi3) and forces (f1-f3) are the study's, "
+      "converted to the chosen units (1 kg = 9.80665 N); with any consistent "
+      "they are refused. The defaults of the lengths (100 x 100, t = 2) are "
+      "numbers, in whichever unit is chosen.");
+  }
+
+  void
+  Units::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    name = prm.get("Units");
+    // Selection: one of the four.
+    length = name == "any consistent" ? "" : name.substr(0, name.find(' '));
+    force  = name == "any consistent" ? "" : name.substr(name.rfind(' ') + 1);
+    mm     = length == "m" ? 1e-3 : 1.0;
+    kg     = force == "N" ? 9.80665 : 1.0;
+  }
 
   std::unique_ptr<dealii::Function<2, double>>
   parse_function(const std::string &parameter,
@@ -116,19 +219,20 @@ namespace unilateral::plate
   Geometry::declare_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    prm.declare_entry("Length x",
-                      "100",
-                      dealii::Patterns::Double(),
-                      "L1 (mm): the plate is [0, L1] x [0, L2]; > 0.");
+    prm.declare_entry(
+      "Length x",
+      "100",
+      dealii::Patterns::Double(),
+      "L1: the plate is [0, L1] x [0, L2], in the length unit of "
+      "'Plate/Units'; > 0.");
     prm.declare_entry("Length y",
                       "100",
                       dealii::Patterns::Double(),
-                      "L2 (mm); > 0.");
-    prm.declare_entry(
-      "Thickness",
-      "2",
-      dealii::Patterns::Double(),
-      "t (mm); > 0. Enters through D = E t^3 / (12 (1 - nu^2)).");
+                      "L2; > 0.");
+    prm.declare_entry("Thickness",
+                      "2",
+                      dealii::Patterns::Double(),
+                      "t; > 0. Enters through D = E t^3 / (12 (1 - nu^2)).");
     prm.declare_entry(
       "Elements x",
       "20",
@@ -162,12 +266,10 @@ namespace unilateral::plate
     prm.leave_subsection();
 
     const std::string section = "Plate/Geometry";
+    check_parameter(length_x > 0, section, "Length x", length_x, "must be > 0");
+    check_parameter(length_y > 0, section, "Length y", length_y, "must be > 0");
     check_parameter(
-      length_x > 0, section, "Length x", length_x, "must be > 0 (mm)");
-    check_parameter(
-      length_y > 0, section, "Length y", length_y, "must be > 0 (mm)");
-    check_parameter(
-      thickness > 0, section, "Thickness", thickness, "must be > 0 (mm)");
+      thickness > 0, section, "Thickness", thickness, "must be > 0");
     check_parameter(n1 >= 1 && n1 <= 100000,
                     section,
                     "Elements x",
@@ -190,7 +292,8 @@ namespace unilateral::plate
                       "steel",
                       dealii::Patterns::Anything(),
                       "steel (E = 21e3 kg/mm^2, nu = 0.28), bronze (11e3, "
-                      "0.31), lead (1.8e3, 0.44), or custom to take "
+                      "0.31), lead (1.8e3, 0.44), E converted to "
+                      "'Plate/Units', or custom to take "
                       "'Young's modulus' and 'Poisson's ratio' below (set "
                       "beside a named material with other values, they are "
                       "refused).");
@@ -199,7 +302,8 @@ namespace unilateral::plate
     prm.declare_entry("Young's modulus",
                       "21000",
                       dealii::Patterns::Double(),
-                      "E (kg/mm^2) for Name = custom; > 0.",
+                      "E (force per area, e.g. kg/mm^2 with the default Units) "
+                      "for Name = custom; > 0.",
                       true);
     prm.declare_entry("Poisson's ratio",
                       "0.28",
@@ -210,7 +314,7 @@ namespace unilateral::plate
   }
 
   void
-  Material::parse_parameters(dealii::ParameterHandler &prm)
+  Material::parse_parameters(dealii::ParameterHandler &prm, const Units &units)
   {
     prm.enter_subsection("Material");
     name                  = prm.get("Name");
@@ -222,8 +326,13 @@ namespace unilateral::plate
     const auto        named   = named_materials.find(name);
     if (named != named_materials.end())
       {
-        youngs_modulus = named->second.youngs_modulus;
-        poisson_ratio  = named->second.poisson_ratio;
+        require_labelled_units(units,
+                               "Material/Name",
+                               name,
+                               "set Name = custom with its 'Young's modulus'");
+        youngs_modulus =
+          named->second.youngs_modulus * units.kg / (units.mm * units.mm);
+        poisson_ratio = named->second.poisson_ratio;
         // A different value set beside a named material would be ignored.
         for (const auto &[entry, given, own] :
              {std::tuple{"Young's modulus", E_given, youngs_modulus},
@@ -252,11 +361,8 @@ namespace unilateral::plate
                     name,
                     "unknown material; choose steel, bronze, lead, or custom "
                     "with 'Young's modulus' and 'Poisson's ratio'");
-    check_parameter(E_given > 0,
-                    section,
-                    "Young's modulus",
-                    E_given,
-                    "must be > 0 (kg/mm^2)");
+    check_parameter(
+      E_given > 0, section, "Young's modulus", E_given, "must be > 0");
     check_parameter(nu_given > -1 && nu_given < 0.5,
                     section,
                     "Poisson's ratio",
@@ -274,16 +380,18 @@ namespace unilateral::plate
       "Function",
       "psi3",
       dealii::Patterns::Anything(),
-      "psi (mm), the lower bound w >= psi at every interior node: psi1 = -2, "
+      "psi (a length), the lower bound w >= psi at every interior node: "
+      "psi1 = -2, "
       "psi2 = -0.1 - (x/50 - 1)^2 (y/100 - 0.5)^2, psi3 = -0.5 (x/50 - 1)^2 - "
       "0.02 (x/50 - 1) - 0.5 / (1 + 30 (x/50 - 1)^2) (the paper's eq. 64, "
-      "for x, y in mm), none (no obstacle: a linear system), or any "
+      "for x, y in mm, converted to 'Plate/Units'), none (no obstacle: a "
+      "linear system), or any "
       "expression in x and y (muparser syntax, constant pi).");
     prm.leave_subsection();
   }
 
   void
-  Obstacle::parse_parameters(dealii::ParameterHandler &prm)
+  Obstacle::parse_parameters(dealii::ParameterHandler &prm, const Units &units)
   {
     prm.enter_subsection("Obstacle");
     name = prm.get("Function");
@@ -293,7 +401,14 @@ namespace unilateral::plate
       expression.clear();
     else
       {
-        expression = named != named_obstacles.end() ? named->second : name;
+        if (named != named_obstacles.end())
+          require_labelled_units(units,
+                                 "Obstacle/Function",
+                                 name,
+                                 "give psi as an expression in x and y");
+        expression = named != named_obstacles.end() ?
+                       in_units(named->second, units, true) :
+                       name;
         parse_function("Plate/Obstacle/Function", expression, obstacle_hint);
       }
   }
@@ -306,21 +421,29 @@ namespace unilateral::plate
       "Force",
       "f1",
       dealii::Patterns::Anything(),
-      "f (kg/mm^2), the transverse force per area, positive upwards: f1 = -1, "
-      "f2 = -5, f3 = -10 (the paper's eq. 65), or any expression in x and y "
+      "f, the transverse force per area, positive upwards: f1 = -1, "
+      "f2 = -5, f3 = -10 (the paper's eq. 65, in kg/mm^2, converted to "
+      "'Plate/Units'), or any expression in x and y "
       "(muparser syntax, constant pi). Integrated with 4 x 4 Gauss points "
       "per cell, exactly for polynomials of degree <= 4 in each variable.");
     prm.leave_subsection();
   }
 
   void
-  Load::parse_parameters(dealii::ParameterHandler &prm)
+  Load::parse_parameters(dealii::ParameterHandler &prm, const Units &units)
   {
     prm.enter_subsection("Load");
     name = prm.get("Force");
     prm.leave_subsection();
     const auto named = named_forces.find(name);
-    expression       = named != named_forces.end() ? named->second : name;
+    if (named != named_forces.end())
+      require_labelled_units(units,
+                             "Load/Force",
+                             name,
+                             "give f as a number or an expression in x and y");
+    expression = named != named_forces.end() ?
+                   in_units(named->second, units, false) :
+                   name;
     parse_function("Plate/Load/Force", expression, force_hint);
   }
 
@@ -354,6 +477,7 @@ namespace unilateral::plate
   Parameters::declare_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Plate");
+    Units::declare_parameters(prm);
     Geometry::declare_parameters(prm);
     Material::declare_parameters(prm);
     Obstacle::declare_parameters(prm);
@@ -379,10 +503,11 @@ namespace unilateral::plate
   Parameters::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Plate");
+    units.parse_parameters(prm);
     geometry.parse_parameters(prm);
-    material.parse_parameters(prm);
-    obstacle.parse_parameters(prm);
-    load.parse_parameters(prm);
+    material.parse_parameters(prm, units);
+    obstacle.parse_parameters(prm, units);
+    load.parse_parameters(prm, units);
     output.parse_parameters(prm);
     coarse_mesh_start = prm.get_bool("Coarse-mesh start");
     prm.leave_subsection();

@@ -361,20 +361,26 @@ namespace unilateral::plate
   void
   PlateScene::print_summary(std::ostream &out, const lcp::Report &report) const
   {
-    const Geometry &geometry  = parameters.geometry;
-    const Material &material  = parameters.material;
-    const auto      flags     = out.flags();
-    const auto      precision = out.precision();
+    const Geometry &geometry = parameters.geometry;
+    const Material &material = parameters.material;
+    const Units    &units    = parameters.units;
+    // " mm" after a number; nothing in units of the user's own.
+    const auto in = [](const std::string &unit) {
+      return unit.empty() ? std::string() : " " + unit;
+    };
+    const auto flags     = out.flags();
+    const auto precision = out.precision();
     // The solver's progress lines share this stream and its format state.
     out << std::defaultfloat << std::setprecision(6);
     out << "  plate " << geometry.length_x << " x " << geometry.length_y
-        << " mm, t = " << geometry.thickness << " mm, " << geometry.n_x << " x "
-        << geometry.n_y << " Bogner-Fox-Schmit elements, "
+        << in(units.length) << ", t = " << geometry.thickness
+        << in(units.length) << ", " << geometry.n_x << " x " << geometry.n_y
+        << " Bogner-Fox-Schmit elements, "
         << (geometry.clamp_twist ? "fully clamped" : "clamped (w_xy free)")
         << "\n"
         << "  material " << material.name << ": E = " << material.youngs_modulus
-        << " kg/mm^2, nu = " << material.poisson_ratio << ", D = " << rigidity
-        << " kg mm\n"
+        << in(units.stress()) << ", nu = " << material.poisson_ratio
+        << ", D = " << rigidity << in(units.moment()) << "\n"
         << "  obstacle " << parameters.obstacle.name << ", force "
         << parameters.load.name << "\n"
         << "  |J| = " << plate_results.n_free
@@ -395,9 +401,9 @@ namespace unilateral::plate
     // centre deflection 1.1, 15 and 37 mm on 20, 64 and 128 elements).
     if (obstacle != nullptr && obstacle_on_edge > 0)
       out << "  note: the obstacle rises above the clamped edge (psi = "
-          << obstacle_on_edge << " mm at (" << std::setprecision(8)
-          << obstacle_on_edge_at[0] << ", " << obstacle_on_edge_at[1]
-          << std::setprecision(6)
+          << obstacle_on_edge << in(units.length) << " at ("
+          << std::setprecision(8) << obstacle_on_edge_at[0] << ", "
+          << obstacle_on_edge_at[1] << std::setprecision(6)
           << "), just inside the edge, where w = 0 and its slope is 0): the "
              "plate must climb onto "
              "it within one element of the edge, so the answer depends on "
@@ -419,8 +425,9 @@ namespace unilateral::plate
       }
     out << "  contact nodes cn = " << plate_results.n_contact << "\n"
         << std::scientific << std::setprecision(6) << "  min nodal deflection "
-        << plate_results.min_deflection << " mm, centre deflection "
-        << plate_results.centre_deflection << " mm" << std::endl;
+        << plate_results.min_deflection << in(units.length)
+        << ", centre deflection " << plate_results.centre_deflection
+        << in(units.length) << std::endl;
     out.flags(flags);
     out.precision(precision);
   }
@@ -434,6 +441,7 @@ namespace unilateral::plate
       .set("n_contact", plate_results.n_contact)
       .set("min_deflection", plate_results.min_deflection)
       .set("centre_deflection", plate_results.centre_deflection)
+      .set("units", parameters.units.name)
       .set("n1", parameters.geometry.n_x)
       .set("n2", parameters.geometry.n_y)
       .set("length_x", parameters.geometry.length_x)

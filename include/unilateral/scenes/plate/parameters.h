@@ -11,19 +11,57 @@ namespace dealii
 } // namespace dealii
 
 /**
- * Parameters of the plate scene, subsection "Plate" (units: mm, kg; forces
- * per area in kg/mm^2, as in the plate study). One struct per subsection,
+ * Parameters of the plate scene, subsection "Plate", in the units of
+ * Plate/Units (by default the plate study's: mm, kg; forces per area in
+ * kg/mm^2). One struct per subsection,
  * each with its declare_parameters/parse_parameters; parse_parameters checks
  * every value and throws InputError naming parameter, value and fix.
  */
 namespace unilateral::plate
 {
+  /**
+   * Plate/Units: the unit system of the subsection's numbers. The plate
+   * study's named materials, obstacles and forces are given in its mm and
+   * kg (kilogram-force) and converted to the chosen system; the summary
+   * labels its numbers with it. "any consistent" names no unit and refuses
+   * the named quantities.
+   */
+  struct Units
+  {
+    std::string name = "mm and kg";
+    /// Labels of a length and a force ("mm", "kg"); empty: any consistent.
+    std::string length = "mm";
+    std::string force  = "kg";
+    /// One mm and one kg (force) in the chosen units.
+    double mm = 1;
+    double kg = 1;
+
+    bool
+    labelled() const
+    {
+      return !length.empty();
+    }
+
+    /// Labels of a force per area (E, f) and of a force times a length (D).
+    std::string
+    stress() const;
+
+    std::string
+    moment() const;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   /// Subsection Plate/Geometry: the rectangle, the mesh and the clamping.
   struct Geometry
   {
-    double       length_x  = 100; ///< L1 (mm)
-    double       length_y  = 100; ///< L2 (mm)
-    double       thickness = 2;   ///< t (mm)
+    double       length_x  = 100; ///< L1 (length unit)
+    double       length_y  = 100; ///< L2
+    double       thickness = 2;   ///< t
     unsigned int n_x       = 20;  ///< n1 cells in x
     unsigned int n_y       = 20;  ///< n2 cells in y
     /// Also fix w_xy at boundary nodes. The paper leaves it free, which gives
@@ -41,14 +79,14 @@ namespace unilateral::plate
   struct Material
   {
     std::string name           = "steel";
-    double      youngs_modulus = 21e3; ///< E (kg/mm^2)
+    double      youngs_modulus = 21e3; ///< E (force per area)
     double      poisson_ratio  = 0.28; ///< nu
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm, const Units &units);
   };
 
   /// Subsection Plate/Obstacle: psi, the lower bound on w at interior nodes.
@@ -69,7 +107,7 @@ namespace unilateral::plate
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm, const Units &units);
   };
 
   /// Subsection Plate/Load: the transverse force per area f.
@@ -82,7 +120,7 @@ namespace unilateral::plate
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm, const Units &units);
   };
 
   /// Subsection Plate/Output.
@@ -100,6 +138,7 @@ namespace unilateral::plate
 
   struct Parameters
   {
+    Units    units;
     Geometry geometry;
     Material material;
     Obstacle obstacle;

@@ -39,9 +39,9 @@ namespace unilateral::plate
    *  - S = J1, the w DOFs of the interior nodes, with lower bound
    *    l = psi(node): the obstacle acts at the nodes, as in the paper (24);
    *  - lambda = A u - b is the paper's w: the contact force at each interior
-   *    node (kg), >= 0 and zero where the plate does not touch.
-   * cn, the number of interior nodes in contact, is the size of the solver's
-   * active set.
+   *    node (in the force unit of Plate/Units), >= 0 and zero where the plate
+   * does not touch. cn, the number of interior nodes in contact, is the size of
+   * the solver's active set.
    *
    * Output (unless Output/Write VTU = false): plate.vtu/.pvd, the bicubic
    * deflection interpolated exactly into FE_Q(3) and written with
@@ -91,8 +91,8 @@ namespace unilateral::plate
       unsigned int n_free     = 0; ///< |J|
       unsigned int n_bounds   = 0; ///< |J1|
       unsigned int n_contact  = 0; ///< cn
-      double       rigidity   = 0; ///< D (kg mm)
-      /// Smallest nodal deflection (mm), and w at the plate's centre.
+      double       rigidity   = 0; ///< D (force times length)
+      /// Smallest nodal deflection, and w at the plate's centre.
       double min_deflection    = 0;
       double centre_deflection = 0;
     };
