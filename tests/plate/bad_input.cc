@@ -165,12 +165,26 @@ main()
      "= 0"},
     // Found by a review (2026-11-27): t^3 underflows, D = 0, and the
     // solvers blamed the lengths and the load.
+    // Found by a review (2026-11-30): D subnormal in SI units passed,
+    // and the force unit's division made b infinite.
+    {"rigidity_subnormal_si",
+     "set Units = m and N\nsubsection Geometry\n  set Length x = 0.1\n"
+     "  set Length y = 0.1\n  set Thickness = 1e-110\nend\n",
+     "Plate/Geometry/Thickness",
+     "= 1e-110"},
+    // D normal but 1e-308 of the steel plate's: the load divided by it
+    // overflows (found on the way, 2026-11-30).
+    {"load_beyond_thin_plate",
+     "subsection Geometry\n  set Thickness = 1e-104\nend\n"
+     "subsection Material\n  set Name = custom\n"
+     "  set Young's modulus = 1e10\nend\n",
+     "Plate/Load/Force",
+     "= f1: divided",
+     true},
     {"rigidity_underflow",
      "subsection Geometry\n  set Thickness = 1e-110\nend\n",
      "Plate/Geometry/Thickness",
      "= 1e-110"},
-    // Found by the same review: the value was printed as "21000", the
-    // material's own.
     // The paper's named quantities need units to be converted to.
     {"named_material_own_units",
      "set Units = any consistent\n",
@@ -181,6 +195,8 @@ main()
      "subsection Material\n  set Name = custom\nend\n",
      "Plate/Obstacle/Function",
      "= psi3"},
+    // Found by the same review: the value was printed as "21000", the
+    // material's own.
     {"named_material_near_its_own",
      "subsection Material\n  set Name = steel\n"
      "  set Young's modulus = 21000.0001\nend\n",

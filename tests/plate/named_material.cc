@@ -2,7 +2,8 @@
 // 'Young's modulus' or 'Poisson's ratio' set beside it with another value
 // would be ignored, so it is refused with one line naming both parameters
 // (issue 21: it was ignored without a word). The same value as the named
-// material's, or no value, is fine, and so is Name = custom.
+// material's, or no value, is fine, and so is Name = custom; in other
+// Plate/Units the material's own is its value converted, to rounding.
 #include "../application_test_tools.h"
 
 using namespace application_test;
@@ -10,16 +11,20 @@ using namespace application_test;
 namespace
 {
   Result
-  run_material(const std::string &name, const std::string &material_lines)
+  run_material(const std::string &name,
+               const std::string &material_lines,
+               const std::string &units = "mm and kg")
   {
     write(name + ".prm",
           "set Scene = plate\n"
           "subsection Output\n  set Directory = results\n"
           "  set Write VTU = false\n  set Print timings = false\n"
           "  set Progress = false\nend\n"
-          "subsection Plate\n  subsection Geometry\n"
-          "    set Elements x = 8\n    set Elements y = 8\n  end\n"
-          "  subsection Material\n" +
+          "subsection Plate\n  set Units = " +
+            units +
+            "\n  subsection Geometry\n"
+            "    set Elements x = 8\n    set Elements y = 8\n  end\n"
+            "  subsection Material\n" +
             material_lines + "  end\nend\n");
     return run({name + ".prm"});
   }
@@ -64,6 +69,19 @@ main()
                           "    set Name = steel\n"
                           "    set Young's modulus = 21e3\n"
                           "    set Poisson's ratio = 0.28\n"));
+  // 1800 kg/mm^2 in N/mm^2 is 17651.969999999998 (a review: refused).
+  expect_run("lead in mm and N with its own E converted",
+             run_material("lead_newton",
+                          "    set Name = lead\n"
+                          "    set Young's modulus = 17651.97\n",
+                          "mm and N"));
+  expect_error("lead in mm and N with E in kg/mm^2",
+               run_material("lead_newton_kg",
+                            "    set Name = lead\n"
+                            "    set Young's modulus = 1800\n",
+                            "mm and N"),
+               {"'Plate/Material/Young's modulus' = 1800",
+                "has its own (17651.97)"});
   expect_run("custom with E and nu",
              run_material("custom",
                           "    set Name = custom\n"

@@ -91,9 +91,13 @@ namespace unilateral::plate
     std::string
     exact_text(const double value)
     {
-      std::ostringstream text;
-      text << std::setprecision(17) << value;
-      return text.str();
+      for (int digits = 6;; ++digits)
+        {
+          std::ostringstream text;
+          text << std::setprecision(digits) << value;
+          if (digits >= 17 || std::stod(text.str()) == value)
+            return text.str();
+        }
     }
 
     // The paper's expression @p paper (x, y and its value in mm, or its
@@ -303,7 +307,9 @@ namespace unilateral::plate
                       "21000",
                       dealii::Patterns::Double(),
                       "E (force per area, e.g. kg/mm^2 with the default Units) "
-                      "for Name = custom; > 0.",
+                      "for Name = custom; > 0. Its default, 21000, is a "
+                      "number in whichever units are chosen (steel in the "
+                      "paper's).",
                       true);
     prm.declare_entry("Poisson's ratio",
                       "0.28",
@@ -347,7 +353,11 @@ namespace unilateral::plate
                         << " has its own (" << own
                         << "): set Name = custom or remove the line";
             value << std::setprecision(12) << given;
-            check_parameter(given == own || !material_entry_set(prm, entry),
+            // Within rounding of the material's own (E converted to
+            // other units: lead's 1800 kg/mm^2 in N/mm^2 is
+            // 17651.969999999998, a review).
+            const bool same = std::abs(given - own) <= 1e-13 * std::abs(own);
+            check_parameter(same || !material_entry_set(prm, entry),
                             section,
                             entry,
                             value.str(),

@@ -36,6 +36,14 @@ namespace unilateral::plate
       parameters.parse_parameters(prm);
       return parameters;
     }
+
+    /// D of the paper's steel plate (E = 21e3 kg/mm^2, t = 2 mm, nu = 0.28)
+    /// in @p units: the solvers' reference stiffness.
+    double
+    paper_steel_rigidity(const Units &units)
+    {
+      return 15190.972222222221 * units.kg * units.mm;
+    }
   } // namespace
 
   PlateScene::PlateScene(dealii::ParameterHandler &prm)
@@ -52,8 +60,13 @@ namespace unilateral::plate
                                  parameters.geometry.thickness);
     // Each of E, t and nu is in range, but t^3 E can leave double precision
     // (a thickness of 1e-110): then A = 0 or infinite, which the solvers
-    // would blame on the lengths or the load.
-    if (!(rigidity > 0 && std::isfinite(rigidity)))
+    // would blame on the lengths or the load. A subnormal D is refused too:
+    // dividing b by the force unit D / D_steel (assemble_system) made b
+    // infinite, an error that named no parameter (a review).
+    const double relative_rigidity =
+      rigidity / paper_steel_rigidity(parameters.units);
+    if (!(std::isnormal(rigidity) && rigidity > 0 &&
+          std::isnormal(relative_rigidity)))
       {
         std::ostringstream message;
         message << "the bending rigidity D = E t^3 / (12 (1 - nu^2)) of "
@@ -61,9 +74,14 @@ namespace unilateral::plate
                 << parameters.geometry.thickness
                 << " and 'Plate/Material/Young's modulus' = "
                 << parameters.material.youngs_modulus << " is " << rigidity
-                << ", beyond double precision: give them in units nearer "
-                   "to each other (mm and kg/mm^2 for steel: t = 2, E = "
-                   "21000)";
+                << ", beyond double precision: give them in "
+                   "units nearer to each other (choose 'Plate/Units' = "
+                << (parameters.units.labelled() ?
+                      "m and N, mm and N or mm and kg; in mm and kg steel "
+                      "is t = 2, E = 21000" :
+                      "mm and kg, with t = 2 and E = 21000 for steel, or "
+                      "units of your own nearer to each other")
+                << ")";
         throw InputError(message.str());
       }
     // The expressions were checked while parsing; these cannot fail.
@@ -260,14 +278,28 @@ namespace unilateral::plate
     // were); beyond, A and b are divided by D / D_steel, so that the
     // solvers see the steel plate's numbers. Energies and contact forces
     // are reported in the parameter file's units.
-    constexpr double paper_rigidity = 15190.972222222221; // steel, 2 mm
-    const double     ratio          = rigidity / paper_rigidity;
-    unit                            = ratio > 1e3 || ratio < 1e-3 ? ratio : 1.0;
+    const double ratio = rigidity / paper_steel_rigidity(parameters.units);
+    unit               = ratio > 1e3 || ratio < 1e-3 ? ratio : 1.0;
     if (unit != 1)
       {
         lcp_problem.A /= unit;
         lcp_problem.b /= unit;
         lcp_problem.energy_unit = unit;
+        // A load far larger than so thin a plate can carry in double
+        // precision (f ~ 1, D ~ 1e-300).
+        if (!lcp_problem.b.allFinite())
+          {
+            std::ostringstream message;
+            message << "parameter 'Plate/Load/Force' = " << parameters.load.name
+                    << ": divided by the plate's bending rigidity relative "
+                       "to the paper's steel plate ("
+                    << unit
+                    << "), the load leaves double precision: give the force, "
+                       "'Plate/Material/Young's modulus' and "
+                       "'Plate/Geometry/Thickness' in units nearer to each "
+                       "other";
+            throw InputError(message.str());
+          }
       }
     if (unknown_scale.size() > 0) // S A S in place: A may be gigabytes
       {
