@@ -127,6 +127,26 @@ main()
                   "NO")
             << "\n";
 
+  // psi2 depends on x and y: a rectangular bronze plate under f2.
+  const auto rectangle = [](const std::string &units,
+                            const std::string &x,
+                            const std::string &y,
+                            const std::string &t) {
+    return "set Units = " + units +
+           "\nsubsection Geometry\n  set Length x = " + x +
+           "\n  set Length y = " + y + "\n  set Thickness = " + t + "\nend\n" +
+           paper_configuration("bronze", "psi2", "f2", 24);
+  };
+  const Run rectangle_mm =
+    run_plate("psi2_mm", rectangle("mm and kg", "100", "60", "2"), "pdas");
+  const Run rectangle_m =
+    run_plate("psi2_m", rectangle("m and N", "0.1", "0.06", "0.002"), "pdas");
+  compare("psi2, 100 x 60 mm against 0.1 x 0.06 m",
+          rectangle_m,
+          rectangle_mm,
+          1e-3,
+          9.80665);
+
   // Units of the user's own: the millimetre plate in custom numbers, no
   // labels.
   const Run own =
