@@ -150,6 +150,24 @@ namespace unilateral::plate
                         ", or choose 'Plate/Units' = mm and kg, mm and N or "
                         "m and N");
     }
+
+    // What @p name in 'Plate/<parameter>' stands for: one of the paper's
+    // @p named expressions converted to @p units (refused in units that
+    // name none, with @p instead as the fix), or else @p name itself.
+    std::string
+    expression_of(const std::map<std::string, std::string> &named,
+                  const std::string                        &name,
+                  const Units                              &units,
+                  const bool                                is_length,
+                  const std::string                        &parameter,
+                  const std::string                        &instead)
+    {
+      const auto found = named.find(name);
+      if (found == named.end())
+        return name;
+      require_labelled_units(units, parameter, name, instead);
+      return in_units(found->second, units, is_length);
+    }
   } // namespace
 
   std::string
@@ -406,19 +424,16 @@ namespace unilateral::plate
     prm.enter_subsection("Obstacle");
     name = prm.get("Function");
     prm.leave_subsection();
-    const auto named = named_obstacles.find(name);
     if (name == "none")
       expression.clear();
     else
       {
-        if (named != named_obstacles.end())
-          require_labelled_units(units,
-                                 "Obstacle/Function",
-                                 name,
-                                 "give psi as an expression in x and y");
-        expression = named != named_obstacles.end() ?
-                       in_units(named->second, units, true) :
-                       name;
+        expression = expression_of(named_obstacles,
+                                   name,
+                                   units,
+                                   true,
+                                   "Obstacle/Function",
+                                   "give psi as an expression in x and y");
         parse_function("Plate/Obstacle/Function", expression, obstacle_hint);
       }
   }
@@ -445,15 +460,13 @@ namespace unilateral::plate
     prm.enter_subsection("Load");
     name = prm.get("Force");
     prm.leave_subsection();
-    const auto named = named_forces.find(name);
-    if (named != named_forces.end())
-      require_labelled_units(units,
-                             "Load/Force",
-                             name,
-                             "give f as a number or an expression in x and y");
-    expression = named != named_forces.end() ?
-                   in_units(named->second, units, false) :
-                   name;
+    expression =
+      expression_of(named_forces,
+                    name,
+                    units,
+                    false,
+                    "Load/Force",
+                    "give f as a number or an expression in x and y");
     parse_function("Plate/Load/Force", expression, force_hint);
   }
 
