@@ -39,9 +39,10 @@ namespace unilateral::plate
    *  - S = J1, the w DOFs of the interior nodes, with lower bound
    *    l = psi(node): the obstacle acts at the nodes, as in the paper (24);
    *  - lambda = A u - b is the paper's w: the contact force at each interior
-   *    node (in the force unit of Plate/Units), >= 0 and zero where the plate
-   * does not touch. cn, the number of interior nodes in contact, is the size of
-   * the solver's active set.
+   *    node (in the force unit of Plate/Units), >= 0 and zero where the
+   *    plate does not touch.
+   * cn, the number of interior nodes in contact, is the size of the solver's
+   * active set.
    *
    * Output (unless Output/Write VTU = false): plate.vtu/.pvd, the bicubic
    * deflection interpolated exactly into FE_Q(3) and written with
