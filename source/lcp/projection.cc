@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -107,6 +108,16 @@ namespace unilateral::lcp
      * together did not halve it (slower steps would not reach it within
      * the iterations a solve may take).
      *
+     * Polish: once a step passes @p tolerance, at most four more steps
+     * follow while each shrinks and at least halves the residual, until it
+     * is below 1e-4 of @p tolerance; the first that does not (or fails)
+     * ends the method with the iterate before it. Why: the residual a step
+     * leaves is smooth along the free motion, of one sign over a body, so
+     * the body's resultant sums it over its DOFs (a review: three blocks
+     * free to slide on their beds, stopped at 2.8e-11 with the tolerance
+     * 1e-8, had reactions 1e-7 off the loads and contact forces 3e-6 off
+     * PDAS's). The polish changes the answer, never whether there is one.
+     *
      * Where the LCP has no solution (a load that drives a body away), each
      * step moves x by about as much as the one before along that motion,
      * and the KKT residual relative to the growing x falls as if
@@ -141,6 +152,14 @@ namespace unilateral::lcp
       const Vector        start         = solution.u;
       double              previous_step = 0;
       std::vector<double> residuals{kkt_residuals(problem, solution.u).max()};
+      // The iterate that passed, while the polish runs.
+      std::optional<Solution> passed;
+      double                  passed_residual = 0;
+      unsigned int            polish_steps    = 0;
+      const auto              polished        = [&]() {
+        solution = std::move(*passed);
+        return result;
+      };
       for (unsigned int k = 1;
            residuals.size() < 4 ||
            residuals.back() < 0.5 * residuals[residuals.size() - 4];
@@ -154,6 +173,8 @@ namespace unilateral::lcp
           result.counters += step.counters;
           if (!step.converged())
             {
+              if (passed)
+                return polished();
               if (eps >= first_eps || floor > smallest_eps)
                 return step;
               floor = std::min(10 * eps, first_eps);
@@ -164,6 +185,8 @@ namespace unilateral::lcp
             (next.u - solution.u).lpNorm<Eigen::Infinity>();
           solution           = std::move(next);
           const double moved = (solution.u - start).lpNorm<Eigen::Infinity>();
+          if (passed && moved > start.lpNorm<Eigen::Infinity>())
+            return polished();
           if (moved > start.lpNorm<Eigen::Infinity>())
             {
               std::ostringstream message;
@@ -179,13 +202,27 @@ namespace unilateral::lcp
             *progress << "    projection: proximal step " << k
                       << " (eps = " << eps << "): " << step.iterations
                       << " iterations, KKT residual " << residual << std::endl;
-          if (residual <= tolerance && step_length <= 0.5 * previous_step)
-            return result;
+          const bool shrinking = step_length <= 0.5 * previous_step;
+          if (passed)
+            {
+              if (!(shrinking && residual <= 0.5 * passed_residual))
+                return polished();
+              ++polish_steps;
+            }
+          if (passed || (residual <= tolerance && shrinking))
+            {
+              if (residual <= 1e-4 * tolerance || polish_steps == 4)
+                return result;
+              passed          = solution;
+              passed_residual = residual;
+            }
           previous_step = step_length;
           if (residual > 0.1 * residuals.back() && eps > floor)
             set_eps(std::max(0.1 * eps, floor));
           residuals.push_back(residual);
         }
+      if (passed)
+        return polished();
       std::ostringstream message;
       if (residuals.back() <= tolerance)
         message << "the proximal point steps do not shrink (the last moved "
