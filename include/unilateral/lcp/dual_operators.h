@@ -23,6 +23,10 @@ namespace unilateral::lcp
    * subdomains of that shape (BLAS 3). G G^T is singular where a subdomain's
    * rigid motions are held by no multiplier (no support, no neighbour):
    * coarse_factorised() is then false and coarse_failure() says which.
+   * Likewise a subdomain whose stiffness has more null space than its
+   * rigid motions, or too little conditioning for K_s + s R R^T to tell
+   * (blocks of cells far from square): pseudo_inverses_formed() is false
+   * and coarse_failure() names it; nothing else is set up then.
    *
    * The subdomains are distributed over the ranks of the tearing's
    * communicator, each rank its own contiguous run of them (balanced by
@@ -71,6 +75,12 @@ namespace unilateral::lcp
     G() const
     {
       return coarse_matrix;
+    }
+
+    bool
+    pseudo_inverses_formed() const
+    {
+      return pseudo_inverse_failure.empty();
     }
 
     bool
@@ -170,6 +180,8 @@ namespace unilateral::lcp
     blas::ScopedThreads      one_blas_thread{1};
     const Tearing           &torn;
     std::vector<DenseMatrix> pseudo_inverse, rigid;
+    /// Why a subdomain's K_s^+ could not be formed ("" if every one was).
+    std::string pseudo_inverse_failure;
     /// This rank's subdomains, as runs of one shape.
     std::vector<Tearing::Group> own;
     Index                       n_own   = 0;

@@ -484,6 +484,11 @@ namespace unilateral::lcp
       check_tearing(tearing, problem);
       const DualOperators dual(tearing);
       dual.add_setup(report);
+      // TFETI cannot take this input, whatever it holds: the user's choice
+      // of method is what to change.
+      if (!dual.pseudo_inverses_formed())
+        throw InputError("parameter 'Solver/Method' = tfeti: " +
+                         dual.coarse_failure());
       if (!dual.coarse_factorised())
         {
           report.status  = Status::singular;
