@@ -527,6 +527,12 @@ namespace unilateral::masonry
                  std::max(p.diameter, q.diameter);
       };
 
+      // The first such pair is named; the tolerance to suggest is the
+      // largest any pair needs (a review: a block tilted by 1e-7 about one
+      // end was told the 1.5e-7 its first face needed, then refused at its
+      // far end).
+      std::string first_pair;
+      double      most_needed = 0;
       for (std::size_t p = 0; p < faces.size(); ++p)
         unjoined.for_each_near(faces[p], [&](const std::size_t q) {
           const FaceRecord<dim> &a = faces[p], &b = faces[q];
@@ -548,8 +554,24 @@ namespace unilateral::masonry
           for (const auto &v : b.vertices)
             distance = std::max(distance, std::abs((v - centre(a)) * a.normal));
           // Joined if their normals share a class (4 tau) and their
-          // nodes coincide (tau of the smallest cell).
-          const double needed = std::max(angle / 4, distance / cell_size) * 1.5;
+          // nodes coincide (tau of the smallest cell): the tolerance to
+          // suggest covers the distance of each vertex of b from the
+          // nearest of a too, not only from a's plane (a review: faces
+          // tilted by 1e-7 were told 1.5e-7, which then refused their
+          // nodes as not matching).
+          double node_distance = distance;
+          for (const auto &v : b.vertices)
+            {
+              double nearest = std::numeric_limits<double>::infinity();
+              for (const auto &w : a.vertices)
+                nearest = std::min(nearest, v.distance(w));
+              node_distance = std::max(node_distance, nearest);
+            }
+          most_needed =
+            std::max(most_needed,
+                     std::max(angle / 4, node_distance / cell_size) * 1.5);
+          if (!first_pair.empty())
+            return;
           std::ostringstream message;
           message << "blocks " << a.block << " and " << b.block
                   << " have faces that nearly coincide (near "
@@ -564,12 +586,18 @@ namespace unilateral::masonry
                      "tolerance'), so no joint would be made between "
                      "them; make the faces coincide (a mesh written with "
                      "few significant digits: write more)";
-          if (needed <= 1e-3)
-            message << ", raise 'Masonry/Coincidence tolerance' to " << needed
-                    << " or more if they are meant to touch";
-          message << ", or move them further apart (more than " << near << ")";
-          throw InputError(message.str());
+          first_pair = message.str();
         });
+      if (first_pair.empty())
+        return;
+      std::ostringstream message;
+      message << first_pair;
+      if (most_needed <= 1e-3)
+        message << ", raise 'Masonry/Coincidence tolerance' to "
+                << std::setprecision(2) << most_needed
+                << " or more if they are meant to touch";
+      message << ", or move them further apart (more than " << near << ")";
+      throw InputError(message.str());
     }
 
     /**
