@@ -504,26 +504,8 @@ namespace unilateral::masonry
     std::ostringstream message;
     message << std::setprecision(3);
     // The energy's part from the prescribed displacements,
-    // 1/2 c^T K c - f^T c, cancels to far below its terms there. Without
-    // loads an energy within ten times that rounding is zero to it, which
-    // is resolved: a block moved rigidly by a prescribed displacement has
-    // energy 0, computed as -1.6e-15 against a rounding of 2.5e-16, and
-    // was called inaccurate, with advice that changed nothing (a review).
-    // With loads the energy is theirs to resolve.
-    const bool zero_energy =
-      loads == 0 && std::abs(report.energy) <= 10 * energy_offset_rounding;
-    if (zero_energy && report.energy != 0)
-      {
-        std::ostringstream note;
-        note << std::setprecision(3) << "the energy, " << report.energy
-             << ", is zero to the rounding of the prescribed displacements' "
-                "share of it ("
-             << energy_offset_rounding << ")";
-        report.message = report.message.empty() ?
-                           note.str() :
-                           note.str() + "; " + report.message;
-      }
-    if (!zero_energy &&
+    // 1/2 c^T K c - f^T c, cancels to far below its terms there.
+    if (report.energy != 0 &&
         energy_offset_rounding > kkt_tolerance * std::abs(report.energy))
       message << "the energy is resolved only to "
               << energy_offset_rounding / std::abs(report.energy)
