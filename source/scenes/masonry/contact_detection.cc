@@ -554,22 +554,13 @@ namespace unilateral::masonry
           for (const auto &v : b.vertices)
             distance = std::max(distance, std::abs((v - centre(a)) * a.normal));
           // Joined if their normals share a class (4 tau) and their
-          // nodes coincide (tau of the smallest cell): the tolerance to
-          // suggest covers the distance of each vertex of b from the
-          // nearest of a too, not only from a's plane (a review: faces
-          // tilted by 1e-7 were told 1.5e-7, which then refused their
-          // nodes as not matching).
-          double node_distance = distance;
-          for (const auto &v : b.vertices)
-            {
-              double nearest = std::numeric_limits<double>::infinity();
-              for (const auto &w : a.vertices)
-                nearest = std::min(nearest, v.distance(w));
-              node_distance = std::max(node_distance, nearest);
-            }
+          // nodes coincide (tau of the smallest cell). (Not the distance
+          // of each node from the other face's nearest: neighbouring cell
+          // faces that overlap a little are a whole cell apart, and the
+          // suggestion vanished at tilts of 5e-5, a review.)
           most_needed =
             std::max(most_needed,
-                     std::max(angle / 4, node_distance / cell_size) * 1.5);
+                     std::max(angle / 4, distance / cell_size) * 1.5);
           if (!first_pair.empty())
             return;
           std::ostringstream message;
