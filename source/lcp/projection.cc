@@ -116,7 +116,8 @@ namespace unilateral::lcp
      * the body's resultant sums it over its DOFs (a review: three blocks
      * free to slide on their beds, stopped at 2.8e-11 with the tolerance
      * 1e-8, had reactions 1e-7 off the loads and contact forces 3e-6 off
-     * PDAS's). The polish changes the answer, never whether there is one.
+     * PDAS's). The polish never makes the finish fail where it passed;
+     * its answer can pass later checks that the one before failed.
      *
      * Where the LCP has no solution (a load that drives a body away), each
      * step moves x by about as much as the one before along that motion,
