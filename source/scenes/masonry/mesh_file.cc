@@ -473,11 +473,16 @@ namespace unilateral::masonry
                      "an element refers to node " + std::to_string(node) +
                        ", which the file does not define");
               if (dim == 2 && std::abs(found->second[2]) > 0)
-                fail(file,
-                     "a 2D mesh must lie in the plane z = 0 (node " +
-                       std::to_string(node) +
-                       " has z != 0); for a 3D mesh (hexahedra or "
-                       "tetrahedra) set 'Masonry/Dimension = 3'");
+                {
+                  std::ostringstream z;
+                  z << std::setprecision(6) << found->second[2];
+                  fail(file,
+                       "a 2D mesh must lie in the plane z = 0 (node " +
+                         std::to_string(node) + " has z = " + z.str() +
+                         "): write z = 0 for every node, or, for a 3D mesh "
+                         "(hexahedra or tetrahedra), set 'Masonry/Dimension "
+                         "= 3'");
+                }
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   cell.centroid[d] += found->second[d] /

@@ -628,8 +628,9 @@ namespace unilateral::masonry
                     rule,
                     std::to_string(classes.size()) +
                       " material classes are given but 'single' uses one; "
-                      "give one class or choose 'alternating courses' or "
-                      "'cyclic'");
+                      "give one class, or choose 'physical tag' (a mesh "
+                      "file's groups) or, for the built-in walls, "
+                      "'alternating courses' or 'cyclic'");
   }
 
   std::vector<unsigned int>
