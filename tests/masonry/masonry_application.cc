@@ -530,6 +530,35 @@ main()
               << "\n";
   }
 
+  // A run that fails shows its last iterate as such: Graves on the
+  // Schur complement of a wall without side rollers (A_EE singular) ended
+  // at its zero start, and the summary read "36 of 40 contacts closed"
+  // and "18 contacts have zero gap and no force" (a review).
+  {
+    std::string output;
+    const int   code =
+      run("graves_singular",
+          masonry_prm("  set Blocks per side = 3\n"
+                      "  subsection Boundary conditions\n"
+                      "    set Normal displacement zero = base where x > s\n"
+                      "  end\n") +
+            "subsection Solver\n  set Method = graves\n"
+            "  set Schur complement = true\nend\n",
+          error,
+          &output);
+    std::cout << "Graves on a singular Schur complement: exit code " << code
+              << ", its zero start called the last iterate, not an answer: "
+              << (output.find("the last iterate, not an answer") !=
+                      std::string::npos ?
+                    "yes" :
+                    "no")
+              << ", no note of degenerate contacts: "
+              << (output.find("zero gap and no force") == std::string::npos ?
+                    "yes" :
+                    "no")
+              << "\n";
+  }
+
   std::cout << "Patch test output (laminae, m = 4, g = 0, P2):\n";
   std::cout << "  exit code "
             << run("patch",

@@ -742,11 +742,16 @@ namespace unilateral::masonry
       out << " + " << s.n_inclined_joint << " inclined";
     out << "\n";
     print_solver_summary(out, lcp_problem, report);
+    // A run that did not converge shows its last iterate, which is no
+    // answer (a singular Schur complement's zero start read "39 of 39
+    // contacts closed", a review).
     if (report.solved)
-      out << std::scientific << std::setprecision(6) << "  max displacement "
-          << max_displacement << ", " << n_closed_contacts << " of "
-          << quantity(s.n_constraints, "contact") << " closed\n";
-    if (n_degenerate_contacts > 0)
+      out << std::scientific << std::setprecision(6)
+          << (report.converged() ? "  " : "  the last iterate, not an answer: ")
+          << "max displacement " << max_displacement << ", "
+          << n_closed_contacts << " of " << quantity(s.n_constraints, "contact")
+          << " closed\n";
+    if (report.converged() && n_degenerate_contacts > 0)
       out << "  " << quantity(n_degenerate_contacts, "contact")
           << (n_degenerate_contacts == 1 ? " has" : " have")
           << " zero gap and no force (degenerate: the solver counts them "
